@@ -1,0 +1,175 @@
+"""The one bridge from exact sympy to numbers: mpmath at any precision, python-flint balls.
+
+* :func:`to_jets` replaces the motion's functions and their time derivatives by plain symbols
+  (``x(t) -> x_t0``, ``x'(t) -> x_t1`` …): an identity among derivatives holds for all
+  motions exactly when it holds for all values of these jets.
+* :func:`mp_function` compiles an expression once with ``lambdify(modules=[table, "mpmath"])``;
+  precision is whatever local ``mpmath.workdps`` the caller opens — nothing here sets it.
+* :func:`arb_eval` evaluates an expression in complex ball arithmetic (python-flint ``acb``):
+  the result's radius bounds all rounding and truncation errors, so a ball that excludes zero
+  certifies a non-zero difference.  Elliptic functions take the parameter m = k² in both.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import mpmath
+import sympy as sp
+
+from . import symbols as S
+
+#: sympy name -> mpmath function.  One table for the whole project.
+MPMATH_NAMES = {
+    "elliptic_k": mpmath.ellipk,
+    "elliptic_f": mpmath.ellipf,
+    "elliptic_e": mpmath.ellipe,
+    "elliptic_pi": mpmath.ellippi,
+}
+
+
+def to_jets(expr: sp.Basic) -> sp.Basic:
+    """Evaluate time derivatives of expressions, then name each function jet by a symbol."""
+    expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    repl = {}
+    for d in expr.atoms(sp.Derivative):
+        f = d.expr
+        if isinstance(f, sp.core.function.AppliedUndef) and set(v for v, _ in d.variable_count) == {S.t}:
+            repl[d] = jet_symbol(f, d.derivative_count)
+    expr = expr.xreplace(repl)
+    repl = {f: jet_symbol(f, 0) for f in expr.atoms(sp.core.function.AppliedUndef) if f.args == (S.t,)}
+    return expr.xreplace(repl)
+
+
+@lru_cache(maxsize=None)
+def jet_symbol(f: sp.Basic, order: int) -> sp.Symbol:
+    name = f.func.__name__
+    positive = name in ("rho", "v", "s") and order == 0
+    return sp.Symbol(f"{name}_t{order}", positive=True) if positive else sp.Symbol(f"{name}_t{order}", real=True)
+
+
+def is_jet(sym: sp.Basic) -> bool:
+    return isinstance(sym, sp.Symbol) and "_t" in sym.name and sym.name.rsplit("_t", 1)[1].isdigit()
+
+
+def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
+    """Compile ``expr`` for mpmath (cached by the caller)."""
+    return sp.lambdify(args, expr, modules=[MPMATH_NAMES, "mpmath"])
+
+
+def mp_value(value: sp.Expr, dps: int):
+    """An exact sympy number as an mpmath number at ``dps`` digits (plus guard digits)."""
+    num = sp.N(value, dps + 10)
+    if num.is_real:
+        return mpmath.mpf(sp.Float(num, dps + 10)._mpf_)
+    re, im = num.as_real_imag()
+    return mpmath.mpc(sp.Float(re, dps + 10)._mpf_, sp.Float(im, dps + 10)._mpf_)
+
+
+def mp_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], dps: int):
+    """Value of ``expr`` at an exact ``point`` with ``dps`` significant digits (local context)."""
+    args = tuple(sorted(expr.free_symbols, key=str))
+    fn = mp_function(expr, args)
+    with mpmath.workdps(dps):
+        vals = [mp_value(point[a], dps) for a in args]
+        return +fn(*vals)
+
+
+# --- python-flint balls ---------------------------------------------------------------------
+class Unsupported(Exception):
+    """The expression has a node the ball evaluator does not handle."""
+
+
+def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256):
+    """Evaluate in ``flint.acb`` at ``prec`` bits; returns an acb ball.  Raises
+    :class:`Unsupported` for nodes it cannot bound rigorously."""
+    import flint
+
+    old = flint.ctx.prec
+    flint.ctx.prec = prec
+    try:
+        env = {sym: _acb_exact(val) for sym, val in point.items()}
+        return _arb(expr, env, False)
+    finally:
+        flint.ctx.prec = old
+
+
+def _acb_exact(val: sp.Expr):
+    import flint
+
+    val = sp.nsimplify(val) if not val.is_number else val
+    if val.is_Rational:
+        return flint.acb(flint.arb(flint.fmpq(int(val.p), int(val.q))))
+    # exact expressions of pi, sqrt, … : evaluate rigorously through the same walker
+    return _arb(val, {}, False)
+
+
+def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch table
+    import flint
+
+    acb = flint.acb
+    if e in env:
+        return env[e]
+    if e.is_Rational:
+        return acb(flint.arb(flint.fmpq(int(e.p), int(e.q))))
+    if e is sp.pi:
+        return acb(flint.arb.pi())
+    if e is sp.E:
+        return acb(1).exp()
+    if e is sp.I:
+        return acb(0, 1)
+    if isinstance(e, sp.Add):
+        out = acb(0)
+        for a in e.args:
+            out += _arb(a, env, analytic)
+        return out
+    if isinstance(e, sp.Mul):
+        out = acb(1)
+        for a in e.args:
+            out *= _arb(a, env, analytic)
+        return out
+    if isinstance(e, sp.Pow):
+        base = _arb(e.base, env, analytic)
+        ex = e.exp
+        if ex.is_Integer:
+            return base ** int(ex)
+        if ex == sp.Rational(1, 2):
+            return base.sqrt(analytic=analytic)
+        if ex == -sp.Rational(1, 2):
+            return 1 / base.sqrt(analytic=analytic)
+        if ex.is_Rational:
+            return base.sqrt(analytic=analytic) ** int(2 * ex) if (2 * ex).is_Integer else (
+                (base.log(analytic=analytic) * _arb(ex, env, analytic)).exp())
+        return (base.log(analytic=analytic) * _arb(ex, env, analytic)).exp()
+    unary = {
+        sp.sin: lambda a: a.sin(), sp.cos: lambda a: a.cos(), sp.tan: lambda a: a.tan(),
+        sp.exp: lambda a: a.exp(), sp.atan: lambda a: a.atan(),
+        sp.log: lambda a: a.log(analytic=analytic), sp.asin: lambda a: a.asin(),
+        sp.acos: lambda a: a.acos(), sp.sinh: lambda a: a.sinh(), sp.cosh: lambda a: a.cosh(),
+        sp.acot: lambda a: (1 / a).atan(),
+    }
+    if e.func in unary:
+        return unary[e.func](_arb(e.args[0], env, analytic))
+    if isinstance(e, sp.Abs):
+        a = _arb(e.args[0], env, analytic)
+        return acb(a.abs())
+    if isinstance(e, sp.elliptic_k):
+        return acb.elliptic_k(_arb(e.args[0], env, analytic))
+    if isinstance(e, sp.elliptic_f):
+        return acb.elliptic_f(_arb(e.args[0], env, analytic), _arb(e.args[1], env, analytic))
+    if isinstance(e, sp.elliptic_e):
+        if len(e.args) == 1:
+            return acb.elliptic_e(_arb(e.args[0], env, analytic))
+        return acb.elliptic_e_inc(_arb(e.args[0], env, analytic), _arb(e.args[1], env, analytic))
+    if isinstance(e, sp.factorial) and e.args[0].is_Integer:
+        return acb(int(sp.factorial(e.args[0])))
+    if isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 3:
+        var, lo, hi = e.limits[0]
+        a, b = _arb(lo, env, analytic), _arb(hi, env, analytic)
+        body = e.function
+
+        def f(zz, an):
+            return _arb(body, {**env, var: zz}, an)
+
+        return acb.integral(f, a, b)
+    raise Unsupported(f"no ball evaluation for {e.func.__name__}")

@@ -1,0 +1,317 @@
+"""The checker: printed against derived, symbolic first, then numeric on a precision ladder,
+then ball arithmetic where it decides a refutation.
+
+A *claim* is a pair of expressions that should be equal on the declared domain.  The order:
+
+1. dimensions of every printed relation (an inconsistent one is refuted outright);
+2. symbolic: ``simplify(p − d) == 0`` within a time bound; for an integral with a variable
+   upper limit X, the fundamental theorem: d/dX (p − d) = 0 and (p − d) = 0 at the lower limit;
+3. numeric: many random in-domain points (seeded by the id), each evaluated at the digits of
+   every rung of the ladder; agreement must hold on every rung, a disagreement must be stable
+   from rung to rung;
+4. certified: the worst disagreement re-evaluated in python-flint balls; a ball for p − d that
+   excludes 0 proves the printed form wrong at that point.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import threading
+from contextlib import contextmanager
+from dataclasses import dataclass, replace
+
+import mpmath
+import sympy as sp
+
+from . import bridge
+from .dimensions import check_relation
+from .domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
+from .registry import Derivation, as_list
+from .verdict import Inconclusive, Method, Refuted, Verdict, Verified, Witness, combine
+
+
+@dataclass(frozen=True)
+class Options:
+    dps: int = 30  # first rung of the ladder; the second is 2 × dps
+    points: int = 20
+    symbolic_seconds: float = 4.0
+    symbolic: bool = True
+    certify: bool = True
+
+    @property
+    def ladder(self) -> tuple[int, ...]:
+        return (self.dps, 2 * self.dps)
+
+
+@dataclass(frozen=True)
+class Claim:
+    printed: sp.Expr
+    derived: sp.Expr
+    quantity: str
+    scale: sp.Expr | None = None  # magnitude the difference is measured against
+
+
+class _Timeout(BaseException):  # BaseException: sympy's `except Exception` cannot swallow it
+    pass
+
+
+@contextmanager
+def time_limit(seconds: float):
+    """Bound a block's wall time with SIGALRM (main thread only; elsewhere unbounded)."""
+    if seconds <= 0 or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum, frame):
+        raise _Timeout()
+
+    old = signal.signal(signal.SIGALRM, handler)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+# --- building claims ----------------------------------------------------------------------
+def _doit_derivatives(e):
+    return e.replace(lambda a: isinstance(a, sp.Derivative), lambda a: a.doit())
+
+
+def _solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
+    if not isinstance(rel, sp.Eq):
+        return None
+    if rel.lhs == unknown:
+        return rel.rhs
+    if rel.rhs == unknown:
+        return rel.lhs
+    dummy = sp.Dummy("u")
+    expr = (rel.lhs - rel.rhs).xreplace({unknown: dummy})
+    if dummy not in expr.free_symbols:
+        return None
+    coeff = sp.diff(expr, dummy)
+    if dummy in coeff.free_symbols:
+        sols = sp.solve(expr, dummy)
+        return sols[0] if len(sols) == 1 else None
+    return sp.cancel(-expr.xreplace({dummy: 0}) / coeff) if coeff.is_polynomial() else -expr.xreplace({dummy: 0}) / coeff
+
+
+def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[Claim] | str:
+    """Pair the printed relations with the derivation's result; a string is a reason why not."""
+    mode = derivation.mode
+    if mode == "condition":
+        if not all(isinstance(r, sp.Eq) for r in printed):
+            return "a condition is an equation"
+        cond = {r.lhs: r.rhs for r in printed}
+        q = _doit_derivatives(result)
+        return [Claim(q.subs(cond), sp.Integer(0), f"{sp.sstr(q)} under the condition", sp.Abs(q))]
+    if mode == "substitute":
+        model = dict(result or {})
+        out = []
+        for rel in printed:
+            if isinstance(rel, sp.Eq):
+                lhs = _doit_derivatives(_doit_derivatives(rel.lhs).subs(model))
+                rhs = _doit_derivatives(_doit_derivatives(rel.rhs).subs(model))
+                out.append(Claim(lhs - rhs, sp.Integer(0), "lhs - rhs on the derived solution",
+                                 sp.Abs(lhs) + sp.Abs(rhs)))
+            elif isinstance(rel, sp.Basic) and rel in (sp.true, sp.false):
+                return f"printed relation evaluates to {rel}"
+            else:
+                out.append(Claim(_doit_derivatives(rel.subs(model)), sp.Integer(0), "expression on the derived solution"))
+        return out
+    derived = [_doit_derivatives(d) if isinstance(d, sp.Basic) else d for d in as_list(result)]
+    printed = [_doit_derivatives(p) for p in printed]
+    if len(derived) != len(printed):
+        return f"printed has {len(printed)} relation(s), derivation gives {len(derived)}"
+    if mode == "expression":
+        return [Claim(p, d, "value") for p, d in zip(printed, derived)]
+    out = []
+    unknowns = derivation.unknowns or tuple(d.lhs for d in derived)
+    for p, d, unk in zip(printed, derived, unknowns):
+        unk = _doit_derivatives(unk)
+        if p in (sp.true, sp.false):
+            return f"printed relation evaluates to {p}"
+        pv, dv = _solve_for(p, unk), _solve_for(d, unk)
+        if dv is None:
+            return f"cannot solve the derived relation for {sp.sstr(unk)}"
+        if pv is not None:
+            out.append(Claim(pv, dv, sp.sstr(unk)))
+        elif isinstance(p, sp.Eq):
+            # not solvable for the unknown (absent, or several branches): the printed relation
+            # must still hold wherever the derived one does
+            lhs, rhs = p.lhs.xreplace({unk: dv}), p.rhs.xreplace({unk: dv})
+            out.append(Claim(lhs - rhs, sp.Integer(0), f"printed lhs - rhs where {sp.sstr(unk)} is derived",
+                             sp.Abs(lhs) + sp.Abs(rhs)))
+        else:
+            return f"the printed entry is not an equation for {sp.sstr(unk)}"
+    return out
+
+
+# --- the stages -----------------------------------------------------------------------------
+def symbolic_zero(diff: sp.Expr, seconds: float) -> bool:
+    """True only when sympy proves ``diff`` identically zero within ``seconds``."""
+    try:
+        with time_limit(seconds):
+            if diff == 0:
+                return True
+            if sp.simplify(diff) == 0 or _forced_zero(diff):
+                return True
+            return _ftc_zero(diff)
+    except _Timeout:
+        return False
+    except Exception:  # noqa: BLE001 - a CAS failure proves nothing
+        return False
+
+
+def _forced_zero(e: sp.Expr) -> bool:
+    """√a·√b = √(ab) as if every radicand were positive — true inside the physical domains
+    (|ζ| ≤ 1, k² < 1, …) though not for all complex values; the numeric cross-check that
+    follows every proof guards against a domain where it fails."""
+    return sp.simplify(sp.powsimp(sp.powdenest(e, force=True), force=True)) == 0
+
+
+def _ftc_zero(diff: sp.Expr) -> bool:
+    """Integrals with a variable upper limit X: d/dX diff ≡ 0 and diff(lower limit) = 0."""
+    for integral in diff.atoms(sp.Integral):
+        for lim in integral.limits:
+            if len(lim) == 3 and isinstance(lim[2], sp.Symbol):
+                X, lower = lim[2], lim[1]
+                dd = sp.diff(diff, X)
+                if sp.simplify(dd) == 0 or _forced_zero(dd):
+                    at_lower = diff.subs(X, lower).doit()
+                    if sp.simplify(at_lower) == 0:
+                        return True
+    return False
+
+
+def _jet_ranges(syms) -> dict:
+    out = {}
+    for s in syms:
+        if bridge.is_jet(s):
+            out[s] = POSITIVE_JET_RANGE if s.is_positive else JET_RANGE
+    return out
+
+
+def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
+    defs = domain.definition_map()
+    p = bridge.to_jets(substitute_definitions(claim.printed, defs))
+    d = bridge.to_jets(substitute_definitions(claim.derived, defs))
+    scale = bridge.to_jets(substitute_definitions(claim.scale, defs)) if claim.scale is not None else None
+    syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
+    try:
+        pts = Sampler(domain, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(opts.points)
+    except KeyError as exc:
+        return Inconclusive(Method.NONE, f"{exc.args[0]}")
+    if len(pts) < max(3, opts.points // 2):
+        return Inconclusive(Method.NONE, "the domain's constraints leave too few points")
+    args = tuple(sorted(syms, key=str))
+    fp, fd = bridge.mp_function(p, args), bridge.mp_function(d, args)
+    fs = bridge.mp_function(scale, args) if scale is not None else None
+    rows = []  # per point: list over the ladder of (pv, dv, diff, mag)
+    for pt in pts:
+        row = []
+        for dps in opts.ladder:
+            try:
+                with mpmath.workdps(dps):
+                    vals = [bridge.mp_value(pt[a], dps) for a in args]
+                    pv, dv = +fp(*vals), +fd(*vals)
+                    mag = max(abs(pv), abs(dv))
+                    if fs is not None:
+                        mag = max(mag, abs(+fs(*vals)))
+                    diff = abs(pv - dv)
+                    if not (mpmath.isfinite(diff) and mpmath.isfinite(mag)):
+                        raise ValueError("not finite")
+                row.append((pv, dv, diff, mag))
+            except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
+                row = None
+                break
+        if row is not None:
+            rows.append((pt, row))
+    if len(rows) < max(3, opts.points // 2):
+        return Inconclusive(Method.NONE, f"only {len(rows)} of {len(pts)} points could be evaluated")
+    typical = sorted(float(r[-1][3]) for _, r in rows)[len(rows) // 2]
+    floor = typical * 1e-6
+    disagree, unstable = [], 0
+    for pt, row in rows:
+        ok = []
+        for (dps, (pv, dv, diff, mag)) in zip(opts.ladder, row):
+            ref = max(float(mag), floor) or 1.0
+            ok.append(float(diff) <= 10 ** (-0.6 * dps) * ref)
+        if all(ok):
+            continue
+        # a true difference is one that no rung resolves and that does not move as the
+        # precision rises; anything else is noise of an ill-conditioned evaluation
+        lo, hi = float(row[0][2]), float(row[-1][2])
+        if not any(ok) and abs(lo - hi) <= 1e-3 * hi:
+            disagree.append((hi / max(float(row[-1][3]), floor, 1e-300), pt, row))
+        else:
+            unstable += 1
+    n, ladder = len(rows), opts.ladder
+    if disagree:
+        rel, pt, row = max(disagree, key=lambda r: r[0])
+        witness = _witness(claim, p, d, pt, row, ladder[-1], opts, rel)
+        method = Method.CERTIFIED if witness.certified else Method.NUMERIC
+        return Refuted(method, f"{len(disagree)} of {n} points disagree (largest relative difference {rel:.3g})",
+                       n, ladder, witness=witness)
+    if unstable:
+        return Inconclusive(Method.NUMERIC, f"{unstable} of {n} points unstable under the precision ladder", n, ladder)
+    return Verified(Method.NUMERIC, f"agrees at {n} points to {math.floor(0.6 * ladder[0])}+ digits", n, ladder)
+
+
+def _witness(claim, p, d, pt, row, dps, opts, rel) -> Witness:
+    certified = False
+    if opts.certify:
+        try:
+            pb = bridge.arb_eval(p, pt)
+            db = bridge.arb_eval(d, pt)
+            certified = bool(pb.is_finite() and db.is_finite() and not (pb - db).contains(0))
+        except (bridge.Unsupported, ValueError, ZeroDivisionError, TypeError, AttributeError):
+            certified = False
+    pv, dv = row[-1][0], row[-1][1]
+    with mpmath.workdps(dps):
+        return Witness(
+            parameters={str(s): sp.sstr(v) for s, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
+            printed=_num_str(pv), corrected=_num_str(dv), digits=dps, certified=certified,
+            quantity=claim.quantity, relative_difference=f"{rel:.3e}",
+        )
+
+
+def _num_str(v) -> str:
+    if isinstance(v, mpmath.mpc) and abs(v.imag) <= abs(v) * mpmath.mpf(10) ** (-mpmath.mp.dps + 5):
+        v = v.real
+    return mpmath.nstr(v, 25)
+
+
+def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: str, opts: Options) -> Verdict:
+    """The verdict on ``printed`` against ``derivation`` (see the module docstring)."""
+    from .registry import derived
+
+    dim_problems = [r for r in (check_relation(rel, dims) for rel in printed) if r]
+    dim_text = "consistent" if not dim_problems else "inconsistent: " + "; ".join(dim_problems)
+    try:
+        result = derived(derivation.id)
+    except Exception as exc:  # noqa: BLE001 - a failing derivation is an inconclusive entry
+        return Inconclusive(Method.NONE, f"derivation failed: {type(exc).__name__}: {exc}", dimensions=dim_text)
+    claims = claims_for(printed, derivation, result)
+    if isinstance(claims, str):
+        return Inconclusive(Method.NONE, claims, dimensions=dim_text)
+    verdicts = []
+    defs = derivation.domain.definition_map()
+    for i, claim in enumerate(claims):
+        proved = opts.symbolic and symbolic_zero(
+            substitute_definitions(claim.printed - claim.derived, defs), opts.symbolic_seconds)
+        # a proof is still cross-checked at a few points: a CAS slip must not pass silently
+        v = numeric(claim, derivation.domain, f"{label}#{i}", replace(opts, points=6) if proved else opts)
+        if proved and isinstance(v, Verified):
+            v = Verified(Method.SYMBOLIC, "sympy proves the difference zero; " + v.detail, v.points, v.digits)
+        elif proved:
+            v = Inconclusive(Method.NONE, f"sympy proves zero but numerics say {v.name}: {v.detail}",
+                             v.points, v.digits)
+        verdicts.append(v)
+    out = combine(verdicts)
+    if dim_problems and not isinstance(out, Refuted):
+        return Refuted(Method.DIMENSIONAL, f"dimensionally inconsistent ({out.name} numerically)",
+                       out.points, out.digits, dimensions=dim_text)
+    return replace(out, dimensions=dim_text)

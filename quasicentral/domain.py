@@ -1,0 +1,181 @@
+"""Declared domains: where each symbol lives, the paper's assumptions, and the definitions that
+tie derived symbols to the primitive ones (Ω = √(g/l), u = R0Ω, …).
+
+Points are sampled at random (seeded by the equation id, so a run is reproducible) as *exact*
+sympy numbers; they cross to mpmath only in :mod:`quasicentral.bridge`.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import random
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from . import symbols as S
+
+Interval = tuple[sp.Expr, sp.Expr]
+
+#: Where a symbol lives unless a derivation says otherwise (SI units).  Intervals may refer to
+#: symbols sampled before them (``t`` runs over four periods of the undamped motion).
+DEFAULT_RANGES: dict[sp.Symbol, Interval] = {
+    S.m: (sp.Rational(1, 10), 10),
+    S.g: (1, 25),
+    S.l: (sp.Rational(1, 10), 10),
+    S.R0: (sp.Rational(1, 100), 1),
+    S.v0: (sp.Rational(1, 100), 2),
+    S.kappa: (0, 3),
+    S.beta: (0, 2),
+    S.phi0: (sp.Rational(1, 100), sp.pi - sp.Rational(1, 100)),
+    S.alpha: (-sp.pi, sp.pi),
+    S.S: (-5, 5),
+    S.R: (0, 5),
+    S.A: (-2, 2), S.B: (-2, 2), S.C: (-2, 2), S.D_: (-2, 2), S.Cst: (-2, 2),
+    S.K1: (-1, 1), S.L1: (-1, 1), S.M1: (-1, 1), S.N1: (-1, 1),
+    S.C1: (-1, 1), S.C2: (-1, 1), S.C3: (-1, 1), S.C4: (-1, 1), S.D1: (-1, 1), S.D2: (-1, 1),
+    S.vx: (-2, 2), S.vy: (-2, 2), S.ax: (-2, 2), S.ay: (-2, 2),
+    S.zeta: (-1, 1),
+    S.z: (-sp.pi, sp.pi),
+    S.th: (0, 4 * sp.pi),
+    S.vphi: (0, sp.Rational(3, 2)),
+    S.w: (0, sp.pi / 2),
+    S.k: (sp.Rational(1, 20), sp.Rational(19, 20)),
+    S.k2: (-2, sp.Rational(19, 20)),
+    S.E_tot: (-5, 5), S.T_kin: (0, 5), S.V_pot: (-5, 5), S.Tper: (sp.Rational(1, 10), 10),
+}
+
+#: Definitions applied before evaluation (a derivation may add its own or drop these).
+DEFAULT_DEFINITIONS: dict[sp.Symbol, sp.Expr] = {
+    S.Omega: sp.sqrt(S.g / S.l),
+    S.u: S.R0 * S.Omega,
+    S.omega: sp.sqrt(S.Omega**2 - S.kappa**2),
+}
+
+JET_RANGE: Interval = (-2, 2)
+POSITIVE_JET_RANGE: Interval = (sp.Rational(1, 10), 2)
+
+
+@dataclass(frozen=True)
+class Domain:
+    """Ranges for symbols, definitions of dependent symbols, and constraints (sympy booleans).
+
+    ``ranges`` override :data:`DEFAULT_RANGES`; ``time`` is the interval of t (default four
+    periods 2π/Ω when Ω is defined, else [0, 10] s).
+    """
+
+    ranges: tuple[tuple[sp.Basic, Interval], ...] = ()
+    definitions: tuple[tuple[sp.Basic, sp.Expr], ...] = ()
+    constraints: tuple[sp.Basic, ...] = ()
+    time: Interval | None = None
+    defaults: bool = True  # apply DEFAULT_DEFINITIONS
+
+    @staticmethod
+    def of(ranges=None, definitions=None, constraints=(), time=None, defaults=True) -> "Domain":
+        return Domain(
+            ranges=tuple((ranges or {}).items()),
+            definitions=tuple((definitions or {}).items()),
+            constraints=tuple(constraints),
+            time=time,
+            defaults=defaults,
+        )
+
+    def definition_map(self) -> dict[sp.Basic, sp.Expr]:
+        out = dict(DEFAULT_DEFINITIONS) if self.defaults else {}
+        out.update(dict(self.definitions))
+        return out
+
+    def range_map(self) -> dict[sp.Basic, Interval]:
+        out = dict(DEFAULT_RANGES)
+        out[S.t] = self.time if self.time is not None else (0, 8 * sp.pi / S.Omega)
+        out.update(dict(self.ranges))
+        return out
+
+    def key(self) -> str:
+        return sp.srepr((self.ranges, self.definitions, self.constraints, self.time, self.defaults))
+
+
+def substitute_definitions(expr: sp.Basic, defs: dict[sp.Basic, sp.Expr], rounds: int = 6) -> sp.Basic:
+    """Apply the definitions until nothing changes (definitions may refer to each other)."""
+    for _ in range(rounds):
+        new = expr.xreplace(defs) if defs else expr
+        if new == expr:
+            break
+        expr = new
+    return expr
+
+
+def seed_for(label: str) -> int:
+    return int.from_bytes(hashlib.sha256(label.encode()).digest()[:8], "big")
+
+
+@dataclass
+class Sampler:
+    """Draws exact points for a set of free symbols inside a :class:`Domain`."""
+
+    domain: Domain
+    symbols: list[sp.Symbol]
+    seed: int
+    extra_ranges: dict = field(default_factory=dict)
+
+    def draw(self, count: int, max_tries: int = 200) -> list[dict[sp.Symbol, sp.Expr]]:
+        rng = random.Random(self.seed)
+        ranges = self.domain.range_map()
+        ranges.update(self.extra_ranges)
+        defs = self.domain.definition_map()
+        wanted = set(self.symbols)
+        for c in self.domain.constraints:
+            wanted |= substitute_definitions(c, defs).free_symbols
+        order = _sampling_order(wanted, ranges, defs)
+        points = []
+        tries = 0
+        while len(points) < count and tries < count * max_tries:
+            tries += 1
+            pt: dict[sp.Symbol, sp.Expr] = {}
+            for sym in order:
+                if sym not in ranges:
+                    raise KeyError(f"no range declared for symbol {sym}")
+                lo, hi = ranges[sym]
+                lo = sp.sympify(substitute_definitions(sp.sympify(lo), defs)).xreplace(pt)
+                hi = sp.sympify(substitute_definitions(sp.sympify(hi), defs)).xreplace(pt)
+                pt[sym] = sp.sympify(lo) + (sp.sympify(hi) - sp.sympify(lo)) * sp.Rational(
+                    rng.randrange(1, 2**20), 2**20)
+            if all(_holds(c, pt, defs) for c in self.domain.constraints):
+                points.append(pt)
+        return points
+
+
+def _holds(constraint: sp.Basic, pt: dict, defs: dict) -> bool:
+    c = substitute_definitions(constraint, defs).xreplace(pt)
+    c = substitute_definitions(c, defs).xreplace(pt)
+    try:
+        if c in (sp.true, True):
+            return True
+        if c in (sp.false, False):
+            return False
+        lhs = sp.N(c.lhs - c.rhs, 30)
+        return bool(type(c)(lhs, 0))
+    except (TypeError, AttributeError):
+        return False
+
+
+def _sampling_order(symbols, ranges, defs) -> list[sp.Symbol]:
+    """Symbols whose ranges refer to other symbols are drawn after those (adding them)."""
+    needed: list[sp.Symbol] = []
+
+    def visit(sym, stack=()):
+        if sym in needed:
+            return
+        if sym in stack:
+            raise ValueError(f"circular range for {sym}")
+        lo, hi = ranges.get(sym, (0, 0))
+        deps = set()
+        for end in (lo, hi):
+            deps |= substitute_definitions(sp.sympify(end), defs).free_symbols
+        for d in sorted(deps, key=str):
+            visit(d, stack + (sym,))
+        needed.append(sym)
+
+    for sym in sorted(symbols, key=str):
+        visit(sym)
+    return needed

@@ -1,0 +1,123 @@
+"""How much of the printed LaTeX sympy's own parsers can read, and whether they read it right.
+
+Both backends of :func:`sympy.parsing.latex.parse_latex` are tried (ANTLR and Lark).  A parse
+*counts* only if it agrees numerically with the hand transcription of the same entry, side by
+side, at random points: a parse that reads ``\\frac{dx}{dt}`` as d·x/(d·t) does not count.
+Parsed names are matched to the transcription's symbols by a normalised spelling
+(``R_{0}``, ``R_o`` and ``R_0`` are all ``R0``; ``\\varrho`` is ``rho``; ``\\varphi`` is ``phi``).
+"""
+
+from __future__ import annotations
+
+import random
+import re
+import warnings
+
+import sympy as sp
+
+from . import bridge
+from .catalog import Entry
+
+BACKENDS = ("antlr", "lark")
+
+_PRE = [
+    (r"\\doteq", "="), (r"\\varrho", r"\\rho"), (r"\\varphi", r"\\phi"), (r"\\left\.|\\right\.", ""),
+    (r"\\,|\\;|\\!|\\quad", " "), (r"\\text\{[^}]*\}", ""), (r"\\emptyset", "0"),
+    (r"\\arccotg", r"\\operatorname{acot}"), (r"\\Big|\\big|\\Bigg|\\bigg", ""),
+    (r"\\dots|\\ldots|\\cdots", ""), (r"[,.;]\s*$", ""),
+]
+
+_ALIASES = {"varrho": "rho", "varphi": "phi", "vphi": "phi", "w": "psi", "th": "phi", "theta": "phi",
+            "Ro": "R0", "vo": "v0", "varphi0": "phi0", "phi0": "phi0"}
+
+
+def _normal(name: str) -> str:
+    n = re.sub(r"[\\{}_ ]", "", name)
+    n = re.sub(r"^([A-Za-z]+)o$", r"\g<1>0", n) if n in ("Ro", "vo") else n
+    return _ALIASES.get(n, n)
+
+
+def preprocess(latex: str) -> str:
+    text = latex.strip()
+    for pat, rep in _PRE:
+        text = re.sub(pat, rep, text)
+    return text
+
+
+def _atoms_by_name(expr: sp.Basic) -> dict[str, sp.Basic]:
+    out: dict[str, sp.Basic] = {}
+    for a in expr.atoms(sp.Symbol) | expr.atoms(sp.core.function.AppliedUndef):
+        name = a.func.__name__ if isinstance(a, sp.core.function.AppliedUndef) else a.name
+        out.setdefault(_normal(name), a)
+    return out
+
+
+def _translate(parsed: sp.Basic, ours: sp.Basic) -> sp.Basic | None:
+    names = _atoms_by_name(ours)
+    repl = {}
+    for s in parsed.free_symbols:
+        key = _normal(s.name)
+        if key == "e":
+            repl[s] = sp.E
+        elif key in names:
+            repl[s] = names[key]
+        else:
+            return None  # a symbol the transcription does not have: no agreement possible
+    out = parsed.xreplace(repl)
+    # derivatives the parser took with respect to t of a now-applied function
+    return out
+
+
+def _agree(a: sp.Basic, b: sp.Basic, seed: int) -> bool:
+    a, b = bridge.to_jets(a), bridge.to_jets(b)
+    syms = sorted(a.free_symbols | b.free_symbols, key=str)
+    rng = random.Random(seed)
+    for _ in range(3):
+        pt = {s: sp.Rational(rng.randrange(2000, 9000), 10000) for s in syms}
+        try:
+            va = complex(sp.N(a.xreplace(pt), 20))
+            vb = complex(sp.N(b.xreplace(pt), 20))
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
+        if not abs(va - vb) <= 1e-9 * max(1.0, abs(va), abs(vb)):
+            return False
+    return True
+
+
+def parse_agrees(entry: Entry, backend: str) -> bool:
+    """True when ``backend`` parses the entry's LaTeX into something numerically equal to the
+    transcription (each relation side by side)."""
+    from sympy.parsing.latex import parse_latex
+
+    ours = entry.relations()
+    chunks = [c for c in re.split(r"\\\\|\n", entry.latex) if c.strip()]
+    if len(chunks) != len(ours):
+        chunks = [entry.latex]
+        if len(ours) != 1:
+            return False
+    for i, (chunk, rel) in enumerate(zip(chunks, ours)):
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                parsed = parse_latex(preprocess(chunk), backend=backend)
+        except Exception:  # noqa: BLE001 - any parser failure means "not read"
+            return False
+        parsed = _translate(parsed, rel)
+        if parsed is None:
+            return False
+        if isinstance(rel, sp.Eq) != isinstance(parsed, sp.Eq):
+            return False
+        pairs = [(parsed.lhs, rel.lhs), (parsed.rhs, rel.rhs)] if isinstance(rel, sp.Eq) else [(parsed, rel)]
+        if not all(_agree(p, q, seed=i) for p, q in pairs):
+            return False
+    return True
+
+
+def coverage(entries: list[Entry]) -> dict:
+    """Per entry, which backends read it correctly; and the totals."""
+    per: dict[str, dict[str, bool]] = {}
+    for e in entries:
+        per[e.id] = {b: parse_agrees(e, b) for b in BACKENDS}
+    summary = {"entries": len(entries), **{b: sum(v[b] for v in per.values()) for b in BACKENDS},
+               "any": sum(any(v.values()) for v in per.values())}
+    return {"entries": per, "summary": summary}

@@ -1,0 +1,143 @@
+"""Machine-readable documents (JSON, JUnit XML) and readable tables for the CLI.
+
+Everything here is deterministic: entries in catalog order, keys in a fixed order, no
+timestamps, so the same verdicts give byte-identical output.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+from . import errata as errata_mod
+from .catalog import Entry
+from .verdict import Outcome
+
+
+def _entry_head(e: Entry) -> dict:
+    return {"id": e.id, "source": e.source, "number": e.number, "name": e.name, "section": e.section}
+
+
+def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
+    from .verify import summary
+
+    rows = []
+    for e, o in zip(entries, outcomes):
+        v = o.verdict
+        row = {**_entry_head(e), "verdict": v.name, "method": v.method.value, "printed_latex": e.latex,
+               "erratum": o.erratum, "status": o.status, "detail": v.detail, "dimensions": v.dimensions,
+               "points": v.points, "digits": list(v.digits)}
+        w = getattr(v, "witness", None)
+        row["witness"] = _witness_json(w) if w else None
+        if o.corrected_verdict is not None:
+            row["corrected_verdict"] = o.corrected_verdict.name
+            row["corrected_method"] = o.corrected_verdict.method.value
+        row["problems"] = list(o.problems)
+        rows.append(row)
+    return {"equations": rows, "summary": summary(outcomes)}
+
+
+def _witness_json(w) -> dict:
+    return {"parameters": dict(w.parameters), "printed": w.printed, "corrected": w.corrected,
+            "digits": w.digits, "certified": w.certified, "quantity": w.quantity,
+            "relative_difference": w.relative_difference}
+
+
+def errata_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
+    errs, cleared = errata_mod.load()
+    out_e, out_c = [], []
+    for e, o in zip(entries, outcomes):
+        if e.id in errs:
+            rec = errs[e.id]
+            w = getattr(o.verdict, "witness", None)
+            out_e.append({**_entry_head(e), "kind": rec.kind, "printed_latex": e.latex,
+                          "corrected_latex": rec.corrected_latex,
+                          "witness": _witness_json(w) if w else _dimensional_witness(o),
+                          "note": rec.note, "status": o.status,
+                          "evidence": o.verdict.detail, "method": o.verdict.method.value})
+        elif e.id in cleared:
+            rec = cleared[e.id]
+            out_c.append({**_entry_head(e), "kind": "cleared", "suspicion": rec.suspicion,
+                          "printed_latex": e.latex, "corrected_latex": e.latex, "witness": None,
+                          "note": rec.note, "status": o.status,
+                          "evidence": f"{o.verdict.name} ({o.verdict.method.value}): {o.verdict.detail}",
+                          "method": o.verdict.method.value})
+    return {"errata": out_e, "cleared": out_c}
+
+
+def _dimensional_witness(o: Outcome) -> dict:
+    """A dimensional refutation has no numeric point; its witness is the dimension mismatch."""
+    return {"parameters": {}, "printed": o.verdict.dimensions, "corrected": "consistent",
+            "digits": 0, "certified": True, "quantity": "dimensions", "relative_difference": ""}
+
+
+def catalog_document(entries: list[Entry], coverage: dict) -> dict:
+    from .dimensions import check_relation
+
+    rows = []
+    for e in entries:
+        problems = [p for p in (check_relation(r, e.dims) for r in e.relations()) if p]
+        rows.append({**_entry_head(e), "printed_latex": e.latex, "transcription": e.printed_text,
+                     "dimensions": "consistent" if not problems else "inconsistent: " + "; ".join(problems),
+                     "latex_parser": coverage["entries"].get(e.id)})
+    return {"equations": rows, "latex_parser": coverage["summary"]}
+
+
+def junit_xml(entries: list[Entry], outcomes: list[Outcome]) -> str:
+    suites = ET.Element("testsuites", name="quasicentral verify")
+    by_source: dict[str, list] = {}
+    for e, o in zip(entries, outcomes):
+        by_source.setdefault(e.source, []).append((e, o))
+    for source, pairs in by_source.items():
+        fails = sum(1 for _, o in pairs if not o.ok)
+        skipped = sum(1 for _, o in pairs if o.ok and o.status in ("erratum", "cleared"))
+        suite = ET.SubElement(suites, "testsuite", name=source, tests=str(len(pairs)), failures=str(fails),
+                              errors="0", skipped="0")
+        for e, o in pairs:
+            case = ET.SubElement(suite, "testcase", classname=f"{source}.section{e.section}", name=e.id)
+            props = ET.SubElement(case, "properties")
+            for k, val in (("status", o.status), ("verdict", o.verdict.name), ("method", o.verdict.method.value),
+                           ("erratum", str(o.erratum).lower())):
+                ET.SubElement(props, "property", name=k, value=val)
+            if not o.ok:
+                f = ET.SubElement(case, "failure", message=f"{o.status}: {o.verdict.name}", type=o.verdict.name)
+                f.text = "; ".join(o.problems) or o.verdict.detail
+            elif o.status in ("erratum", "cleared"):
+                out = ET.SubElement(case, "system-out")
+                out.text = f"{o.status}: printed form {o.verdict.name} ({o.verdict.method.value}); {o.verdict.detail}"
+        del skipped
+    ET.indent(suites)
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(suites, encoding="unicode") + "\n"
+
+
+def _table(headers: list[str], rows: list[list[str]]) -> str:
+    widths = [max(len(h), *(len(r[i]) for r in rows)) if rows else len(h) for i, h in enumerate(headers)]
+    line = lambda cells: "  ".join(c.ljust(w) for c, w in zip(cells, widths)).rstrip()  # noqa: E731
+    return "\n".join([line(headers), line(["-" * w for w in widths])] + [line(r) for r in rows])
+
+
+def verify_table(doc: dict) -> str:
+    rows = [[r["id"], r["status"], r["verdict"], r["method"], (r["detail"] or "")[:70]] for r in doc["equations"]]
+    s = doc["summary"]
+    tail = (f"\n{s['entries']} entries: " + ", ".join(f"{v} {k}" for k, v in s["status"].items())
+            + ("" if s["ok"] else f"\nunexpected: {', '.join(s['unexpected'])}"))
+    return _table(["id", "status", "verdict", "method", "detail"], rows) + tail
+
+
+def errata_table(doc: dict) -> str:
+    rows = []
+    for r in doc["errata"]:
+        w = r["witness"]
+        wit = "" if not w else (f"printed {w['printed'][:18]} vs {w['corrected'][:18]}" + (" (certified)" if w["certified"] else ""))
+        rows.append([r["id"], r["kind"], r["status"], wit])
+    out = "Errata\n" + _table(["id", "kind", "status", "witness"], rows)
+    crow = [[r["id"], r["suspicion"][:50], r["status"]] for r in doc["cleared"]]
+    return out + "\n\nCleared suspects\n" + _table(["id", "suspicion", "status"], crow)
+
+
+def catalog_table(doc: dict) -> str:
+    rows = [[r["id"], r["number"] or "", r["name"][:45], "ok" if r["dimensions"] == "consistent" else "INCONSISTENT",
+             ",".join(k for k, ok in (r["latex_parser"] or {}).items() if ok) or "-"] for r in doc["equations"]]
+    s = doc["latex_parser"]
+    return (_table(["id", "no.", "name", "dimensions", "parsed by"], rows)
+            + f"\n\nLaTeX parser: {s['any']} of {s['entries']} entries read and agreeing "
+              f"(antlr {s['antlr']}, lark {s['lark']})")

@@ -1,0 +1,73 @@
+"""The catalog of printed equations: complete, well-formed, dimensionally checked."""
+
+import pytest
+import sympy as sp
+
+from quasicentral import catalog, errata
+from quasicentral.catalog import CatalogError, load_file
+from quasicentral.dimensions import check_relation
+from quasicentral.registry import REGISTRY, load_all
+
+ENTRIES = catalog.entries()
+IDS = [e.id for e in ENTRIES]
+
+
+def test_every_numbered_equation_is_catalogued():
+    numbers = {(e.source, e.number) for e in ENTRIES if e.number}
+    expected = {("brepta1953", str(n)) for n in range(1, 34)} | {("brepta1953", "8a")}
+    expected |= {("pendulum", str(n)) for n in range(49, 67)}
+    assert expected <= numbers
+
+
+def test_ids_are_unique_and_labelled():
+    assert len(IDS) == len(set(IDS))
+    for e in ENTRIES:
+        assert e.id.startswith(e.source + ":")
+        if e.number:
+            assert e.id == f"{e.source}:{e.number}"
+
+
+@pytest.mark.parametrize("eid", IDS)
+def test_transcription_parses(eid):
+    e = catalog.get(eid)
+    for rel in e.relations():
+        assert isinstance(rel, sp.Basic)
+        assert rel not in (sp.true, sp.false), "a transcription must not collapse to True/False"
+    assert e.latex and e.name and e.section
+
+
+@pytest.mark.parametrize("eid", IDS)
+def test_dimensions(eid):
+    """Every entry is dimensionally consistent, unless it is a registered erratum (a printed
+    equation that mixes units is an error in print, and must be recorded as one)."""
+    e = catalog.get(eid)
+    problems = [p for p in (check_relation(r, e.dims) for r in e.relations()) if p]
+    errs, _ = errata.load()
+    if problems:
+        assert eid in errs, f"dimensionally inconsistent and not a registered erratum: {problems}"
+    if eid in errs:
+        rec = errs[eid]
+        for rel in rec.relations():
+            assert check_relation(rel, e.dims) is None, "a correction must be dimensionally consistent"
+
+
+def test_every_entry_has_a_derivation():
+    load_all()
+    missing = [i for i in IDS if i not in REGISTRY]
+    assert not missing
+    stray = [i for i in REGISTRY if i not in set(IDS)]
+    assert not stray, "derivations for ids the catalog does not have"
+
+
+def test_malformed_file_is_refused(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('source = "brepta1953"\nsection = "2"\n[[equation]]\nid = "brepta1953:x"\nname = "x"\n'
+                   "latex = 'x'\nprinted = 'Eq(x, nosuchname)'\n")
+    with pytest.raises(CatalogError, match="cannot read transcription"):
+        load_file(bad)[0].printed
+    bad.write_text('source = "brepta1953"\nsection = "2"\n[[equation]]\nid = "brepta1953:x"\nname = "x"\n')
+    with pytest.raises(CatalogError, match="lacks"):
+        load_file(bad)
+    bad.write_text("source = [")
+    with pytest.raises(CatalogError):
+        load_file(bad)

@@ -1,0 +1,85 @@
+"""The command-line contract: names, JSON keys, exit codes, one-line errors."""
+
+import json
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from quasicentral.cli import main
+
+
+def run(*args):
+    proc = subprocess.run([sys.executable, "-m", "quasicentral.cli", *args], capture_output=True, text=True)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+@pytest.mark.parametrize("args", [
+    ["verify", "--source", "nosuch"],
+    ["verify", "--dps", "0"],
+    ["verify", "--dps", "-5"],
+    ["verify", "--dps", "100000"],
+    ["verify", "--dps", "nan"],
+    ["verify", "--bogus"],
+    ["verify", "--id", "brepta1953:999"],
+    ["nosuchcommand"],
+    [],
+])
+def test_bad_usage_is_one_line_exit_2(args):
+    code, out, err = run(*args)
+    assert code == 2
+    assert err.strip().count("\n") == 0 and err.startswith("quasicentral: error:"), err
+    assert "Traceback" not in err
+
+
+def test_verify_json_contract(outcomes, capsys, monkeypatch):
+    code = main(["verify", "--source", "brepta1953", "--json", "--id", "brepta1953:4", "--id", "brepta1953:1"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 0
+    assert [r["id"] for r in doc["equations"]] == ["brepta1953:1", "brepta1953:4"]
+    for r in doc["equations"]:
+        for key in ("id", "source", "number", "name", "section", "verdict", "method", "printed_latex", "erratum"):
+            assert key in r
+        assert r["verdict"] in ("verified", "refuted", "inconclusive")
+    assert doc["summary"]["ok"] is True
+
+
+def test_errata_json_contract(outcomes, capsys):
+    code = main(["errata", "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert code == 0
+    assert doc["errata"], "the toolkit finds errata in these texts"
+    for r in doc["errata"]:
+        for key in ("id", "source", "number", "name", "kind", "printed_latex", "corrected_latex", "witness", "note"):
+            assert key in r
+        for key in ("parameters", "printed", "corrected", "digits", "certified"):
+            assert key in r["witness"]
+    for r in doc["cleared"]:
+        assert r["note"] and r["evidence"]
+
+
+def test_junit_report(outcomes, tmp_path, capsys):
+    target = tmp_path / "out" / "verify.xml"
+    code = main(["verify", "--junit", str(target), "--source", "pendulum"])
+    capsys.readouterr()
+    assert code == 0
+    root = ET.parse(target).getroot()
+    cases = root.findall(".//testcase")
+    assert cases and all(c.get("name").startswith("pendulum:") for c in cases)
+
+
+def test_unwritable_junit_path_is_a_one_line_error(outcomes, tmp_path, capsys):
+    blocker = tmp_path / "file"
+    blocker.write_text("keep me")
+    code = main(["verify", "--source", "pendulum", "--junit", str(blocker / "x.xml")])
+    err = capsys.readouterr().err
+    assert code == 2 and "cannot write" in err
+    assert blocker.read_text() == "keep me"
+
+
+def test_verify_is_deterministic(outcomes, capsys):
+    main(["verify", "--json", "--source", "pendulum"])
+    first = capsys.readouterr().out
+    main(["verify", "--json", "--source", "pendulum"])
+    assert capsys.readouterr().out == first

@@ -1,0 +1,121 @@
+"""The engine itself: verdicts, registry, checker stages, precision hygiene."""
+
+import mpmath
+import pytest
+import sympy as sp
+
+from quasicentral import bridge
+from quasicentral.check import Claim, Options, _ftc_zero, numeric, symbolic_zero, time_limit
+from quasicentral.domain import Domain
+from quasicentral.registry import RegistryError, derives
+from quasicentral.symbols import Fj, Kc, g, k, l, t, zeta
+from quasicentral.verdict import Inconclusive, Method, Refuted, Verified, Witness, combine
+
+OPTS = Options(points=12)
+
+
+def test_combine_refuted_beats_inconclusive_beats_verified():
+    v = Verified(Method.SYMBOLIC)
+    i = Inconclusive(Method.NONE, "x")
+    r = Refuted(Method.NUMERIC, witness=Witness({}, "1", "2", 30, False))
+    assert combine([v, i, r]) is r
+    assert combine([v, i]) is i
+    assert combine([v, Verified(Method.NUMERIC)]).method is Method.NUMERIC
+    assert isinstance(combine([]), Inconclusive)
+
+
+def test_verdict_json_round_trip():
+    r = Refuted(Method.CERTIFIED, "d", 3, (30, 60), witness=Witness({"a": "1/2"}, "1", "2", 60, True, "q", "1"))
+    assert type(r).from_json(r.to_json()) == r
+
+
+def test_registry_refuses_duplicates_and_missing_docstrings():
+    @derives("test:unique-1")
+    def f():
+        """x = 1."""
+        return sp.Eq(t, 1)
+
+    with pytest.raises(RegistryError, match="duplicate"):
+        @derives("test:unique-1")
+        def f2():
+            """x = 1."""
+            return sp.Eq(t, 1)
+
+    with pytest.raises(RegistryError, match="docstring"):
+        @derives("test:unique-2")
+        def f3():
+            return sp.Eq(t, 1)
+
+
+def test_numeric_verifies_identity_and_refutes_typo():
+    dom = Domain()
+    ok = numeric(Claim(sp.sin(2 * t) , 2 * sp.sin(t) * sp.cos(t), "v"), dom, "id", OPTS)
+    assert isinstance(ok, Verified) and ok.points >= 10
+    bad = numeric(Claim(sp.sin(2 * t), 2 * sp.sin(t) * sp.cos(t) + sp.Rational(1, 10**12), "v"), dom, "id", OPTS)
+    assert isinstance(bad, Refuted), "a difference of 1e-12 is far above 60-digit noise"
+    assert bad.witness.digits == 2 * OPTS.dps
+
+
+def test_numeric_is_inconclusive_without_a_domain():
+    odd = sp.Symbol("nowhere")
+    v = numeric(Claim(odd, odd, "v"), Domain(), "id", OPTS)
+    assert isinstance(v, Inconclusive) and "nowhere" in v.detail
+
+
+def test_refutation_is_certified_with_balls():
+    v = numeric(Claim(sp.sqrt(g / l), sp.sqrt(l / g), "v"), Domain(), "id", OPTS)
+    assert isinstance(v, Refuted) and v.witness.certified and v.method is Method.CERTIFIED
+
+
+def test_symbolic_stage_and_its_time_bound():
+    assert symbolic_zero(sp.sin(t) ** 2 + sp.cos(t) ** 2 - 1, 5)
+    assert not symbolic_zero(sp.sin(t) - t, 5)
+    import time
+
+    t0 = time.perf_counter()
+    with time_limit(0.2):
+        try:
+            while True:
+                time.sleep(0.01)
+        except BaseException:  # noqa: BLE001 - the timeout is a BaseException by design
+            pass
+    assert time.perf_counter() - t0 < 2
+
+
+def test_fundamental_theorem_settles_an_integral_sympy_cannot_do():
+    """F(k, ζ) equals its defining integral: d/dζ of the difference is 0 and it vanishes at 0."""
+    u = sp.Symbol("u_", real=True)
+    integral = sp.Integral(1 / sp.sqrt((1 - u**2) * (1 - k**2 * u**2)), (u, 0, zeta))
+    assert _ftc_zero(Fj(k, zeta) - integral)
+    assert not _ftc_zero(Fj(k, zeta) - 2 * integral)
+
+
+def test_precision_is_local():
+    """No check leaks a precision change into mpmath's global context or python-flint's."""
+    import flint
+
+    before, fbefore = mpmath.mp.dps, flint.ctx.prec
+    numeric(Claim(Kc(k), sp.pi / 2 * sp.hyper([sp.S.Half, sp.S.Half], [1], k**2), "K"), Domain(), "K", OPTS)
+    bridge.arb_eval(Kc(k), {k: sp.Rational(1, 3)}, prec=300)
+    assert mpmath.mp.dps == before and flint.ctx.prec == fbefore
+
+
+def test_library_code_never_assigns_global_precision():
+    import pathlib
+    import re
+
+    root = pathlib.Path(__file__).resolve().parents[1]
+    offenders = [str(p) for d in ("quasicentral", "derivations") for p in (root / d).rglob("*.py")
+                 if re.search(r"\bmp\.dps\s*=|\bmp\.prec\s*=|mpmath\.mp\.dps\s*=", p.read_text())]
+    assert not offenders
+
+
+def test_library_code_never_prints():
+    import pathlib
+    import re
+
+    root = pathlib.Path(__file__).resolve().parents[1]
+    allowed = {"cli.py"}
+    offenders = [str(p) for d in ("quasicentral", "derivations") for p in (root / d).rglob("*.py")
+                 if p.name not in allowed and re.search(r"^\s*print\(", p.read_text(), re.M)]
+    assert not offenders
