@@ -67,6 +67,39 @@ def build_parser() -> argparse.ArgumentParser:
     mu.add_argument("--per-entry", type=_positive_int("--per-entry", 50), default=None,
                     help="at most this many mutants per entry (default: all)")
 
+    pe = sub.add_parser("period", help="the exact period of the simple pendulum, T and T/T0")
+    amp = pe.add_mutually_exclusive_group()
+    amp.add_argument("--amplitude-deg", metavar="A")
+    amp.add_argument("--amplitude-rad", metavar="A")
+    amp.add_argument("--complement-rad", metavar="D", help="δ = π − φ0 (full accuracy near π)")
+    pe.add_argument("--l", metavar="L", default="1", help="length in m (default 1)")
+    pe.add_argument("--g", metavar="G", default="9.81", help="gravity in m/s² (default 9.81)")
+    pe.add_argument("--method", choices=("agm", "series", "ellipk", "quad", "ode"), default="agm")
+    pe.add_argument("--terms", type=_positive_int("--terms", 10**6), default=4, help="terms of the series (66)")
+    pe.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
+                    help="decimal digits (inputs read exactly; agm results correctly rounded)")
+    pe.add_argument("--table", action="store_true", help="T/T0 from 5° to 179.99° at 20 digits, two methods")
+    pe.add_argument("--json", action="store_true")
+
+    tr = sub.add_parser("trajectory", help="the motion of a small-swing spherical pendulum x(t), y(t)")
+    tr.add_argument("--model", required=True, metavar="MODEL")
+    tr.add_argument("--R0", required=True, metavar="X", help="initial distance from the vertical, m")
+    tr.add_argument("--v0", required=True, metavar="V", help="initial speed perpendicular to R0, m/s")
+    tr.add_argument("--omega2", metavar="G_OVER_L", help="Ω² = g/l, 1/s²")
+    tr.add_argument("--l", metavar="L")
+    tr.add_argument("--g", metavar="G")
+    drag = tr.add_mutually_exclusive_group()
+    drag.add_argument("--kappa", metavar="K", help="linear drag, 1/s (R = 2κmv)")
+    drag.add_argument("--beta", metavar="B", help="quadratic drag, 1/m (R = mβv²)")
+    tr.add_argument("--t", metavar="T1,T2,...")
+    tr.add_argument("--t0", metavar="A")
+    tr.add_argument("--t1", metavar="B")
+    tr.add_argument("--n", type=_positive_int("--n", 10**7), metavar="N")
+    tr.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None)
+    fmt = tr.add_mutually_exclusive_group()
+    fmt.add_argument("--json", action="store_true")
+    fmt.add_argument("--csv", action="store_true")
+
     c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
     c.add_argument("--source", choices=sorted(SOURCES))
     c.add_argument("--json", action="store_true")
@@ -178,7 +211,165 @@ def _write_atomic(path: Path, text: str) -> None:
         raise UsageError(f"cannot write {path}: {exc.strerror}") from None
 
 
-_COMMANDS = {"verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog}
+def _period(args) -> int:
+    from . import period as P
+
+    if args.table:
+        rows = P.table()
+        if args.json:
+            print(json.dumps({"table": rows}, indent=2))
+        else:
+            print("amplitude   T/T0 (AGM, correctly rounded)   quadrature agrees")
+            for r in rows:
+                print(f"{r['amplitude_deg']:>9}°  {r['T_over_T0']:<30}  {'yes' if r['agree'] else 'NO'}")
+        return EXIT_OK if all(r["agree"] for r in rows) else EXIT_UNEXPECTED
+    given = {"phi0": args.amplitude_rad, "amplitude_deg": args.amplitude_deg, "delta": args.complement_rad}
+    if all(v is None for v in given.values()):
+        raise UsageError("give --amplitude-deg, --amplitude-rad or --complement-rad")
+    length, grav = finite_float(args.l, "--l"), finite_float(args.g, "--g")
+    if length <= 0:
+        raise UsageError(f"--l must be a positive length, not {args.l}")
+    if grav <= 0:
+        raise UsageError(f"--g must be positive, not {args.g}")
+    try:
+        out = {"method": args.method}
+        if args.dps:
+            import mpmath
+
+            kw = {k: v for k, v in given.items() if v is not None}
+            if args.method == "agm":
+                ratio_text = P.period_ratio_rounded(digits=args.dps, **kw)
+            else:
+                ratio_text = mpmath.nstr(P.period_ratio_mp(dps=args.dps, method=args.method, terms=args.terms, **kw),
+                                         args.dps)
+            with mpmath.workdps(args.dps + 10):
+                t0 = 2 * mpmath.pi * mpmath.sqrt(mpmath.mpf(args.l) / mpmath.mpf(args.g))
+                out["T"] = mpmath.nstr(t0 * mpmath.mpf(ratio_text), args.dps)
+            out["T_over_T0"] = ratio_text
+            out["T0"] = mpmath.nstr(t0, args.dps)
+            out["digits"] = args.dps
+        else:
+            val = {k: finite_float(v, "--" + k.replace("phi0", "amplitude-rad").replace("_", "-")) for k, v in given.items() if v is not None}
+            if "amplitude_deg" in val:
+                val = {"phi0": math.radians(val.pop("amplitude_deg"))}
+            ratio = float(P.period_ratio(val.get("phi0"), delta=val.get("delta"), method=args.method, terms=args.terms))
+            t0 = 2 * math.pi * math.sqrt(length / grav)
+            out.update({"T": t0 * ratio, "T_over_T0": ratio, "T0": t0})
+        if args.method == "series":
+            import numpy as np
+
+            c = P._complement_sine(phi0=math.radians(float(args.amplitude_deg)) if args.amplitude_deg else
+                                   (float(args.amplitude_rad) if args.amplitude_rad else None),
+                                   delta=float(args.complement_rad) if args.complement_rad else None)
+            _, tail = P.series_ratio(np.array([1 - float(c) ** 2]), args.terms)
+            out["terms"] = args.terms
+            out["error_estimate"] = float(tail[0])
+    except P.DomainError as exc:
+        raise UsageError(str(exc)) from None
+    if args.json:
+        print(json.dumps(out, indent=2))
+    else:
+        for k, v in out.items():
+            print(f"{k:15s} {v}")
+    return EXIT_OK
+
+
+def _trajectory(args) -> int:
+    import mpmath
+
+    from . import motion
+
+    if args.model not in motion.MODELS:
+        raise UsageError(f"unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
+    if args.dps:
+        # numbers are read, and the times spaced, at the asked precision plus guard digits
+        with mpmath.workdps(args.dps + 20):
+            return _trajectory_run(args, motion, mpmath)
+    return _trajectory_run(args, motion, mpmath)
+
+
+def _trajectory_run(args, motion, mpmath) -> int:
+    num = (lambda text, name: _exact_number(text, name)) if args.dps else (lambda text, name: finite_float(text, name))
+    R0, v0 = num(args.R0, "--R0"), num(args.v0, "--v0")
+    if args.omega2 is not None:
+        if args.l is not None or args.g is not None:
+            raise UsageError("give --omega2 or --l and --g, not both")
+        omega2 = num(args.omega2, "--omega2")
+    elif args.l is not None and args.g is not None:
+        length, grav = num(args.l, "--l"), num(args.g, "--g")
+        if length <= 0:
+            raise UsageError(f"--l must be a positive length, not {args.l}")
+        if grav <= 0:
+            raise UsageError(f"--g must be positive, not {args.g}")
+        omega2 = grav / length
+    else:
+        raise UsageError("give --omega2, or --l and --g")
+    if args.beta is not None and args.model in ("ellipse", "linear"):
+        raise UsageError(f"model {args.model} takes --kappa, not --beta")
+    kappa = num(args.kappa, "--kappa") if args.kappa is not None else 0
+    if args.model == "ellipse" and args.kappa is not None and kappa != 0:
+        raise UsageError("model ellipse has no drag: leave out --kappa")
+    times = _times(args, num)
+    try:
+        x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, dps=args.dps)
+    except motion.ParameterError as exc:
+        raise UsageError(str(exc)) from None
+    if args.dps:
+        fmt = lambda a: mpmath.nstr(a, args.dps, strip_zeros=False)  # noqa: E731
+    else:
+        fmt = float
+    params = {"R0": args.R0, "v0": args.v0, "omega2": args.omega2, "l": args.l, "g": args.g, "kappa": args.kappa}
+    doc = {"model": args.model, "parameters": {k: v for k, v in params.items() if v is not None},
+           "t": [fmt(a) for a in times], "x": [fmt(a) for a in x], "y": [fmt(a) for a in y]}
+    if args.dps:
+        doc["digits"] = args.dps
+    if args.csv:
+        print("t,x,y")
+        for a, b, c in zip(doc["t"], doc["x"], doc["y"]):
+            print(f"{a!r},{b!r},{c!r}" if not args.dps else f"{a},{b},{c}")
+    elif args.json:
+        print(json.dumps(doc))
+    else:
+        print(f"model {args.model}: {len(times)} points")
+        for a, b, c in zip(doc["t"], doc["x"], doc["y"]):
+            print(f"{a}\t{b}\t{c}")
+    return EXIT_OK
+
+
+def _exact_number(text: str, name: str):
+    import mpmath
+
+    try:
+        val = mpmath.mpf(text.strip())
+    except (ValueError, TypeError, AttributeError):
+        raise UsageError(f"{name} must be a number, not {text!r}") from None
+    if not mpmath.isfinite(val):
+        raise UsageError(f"{name} must be finite, not {text!r}")
+    return val
+
+
+def _times(args, num):
+    if args.t is not None:
+        if any(v is not None for v in (args.t0, args.t1, args.n)):
+            raise UsageError("give --t, or --t0 --t1 --n, not both")
+        parts = [p for p in args.t.split(",") if p.strip()]
+        if not parts:
+            raise UsageError("--t is an empty list of times")
+        times = [num(p, "--t") for p in parts]
+    elif None not in (args.t0, args.t1, args.n):
+        a, b = num(args.t0, "--t0"), num(args.t1, "--t1")
+        if b < a:
+            raise UsageError("--t1 must not be before --t0")
+        n = args.n
+        times = [a + (b - a) * i / (n - 1) for i in range(n)] if n > 1 else [a]
+    else:
+        raise UsageError("give the times: --t T1,T2,... or --t0 A --t1 B --n N")
+    if any(tt < 0 for tt in times):
+        raise UsageError("times must be ≥ 0 (the motion starts at t = 0)")
+    return times
+
+
+_COMMANDS = {"trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
 
 
 def finite_float(text: str, name: str) -> float:
