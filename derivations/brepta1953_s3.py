@@ -14,7 +14,6 @@ from __future__ import annotations
 import sympy as sp
 from sympy.calculus.euler import euler_equations
 
-from quasicentral.domain import Domain
 from quasicentral.registry import derived, derives
 from quasicentral.symbols import C, C1, C2, C3, C4, D, Omega, S, Tper, g, l, m, phi, psi, rho, t
 
@@ -91,7 +90,8 @@ def small_angular_momentum() -> sp.Expr:
 
 def small_angle_motion() -> dict:
     """The general small-swing motion: the tangent-plane oscillator of (12), r̈ = −(g/l) r, solved
-    by dsolve with four free constants, read back as φ = ρ/l and ψ = atan2(Y, X)."""
+    by dsolve with four free constants, read back as φ = ρ/l and ψ = atan2(Y, X).  (Used by the
+    tests: it satisfies the reduced equations (8), (9) identically.)"""
     Xf, Yf = sp.Function("X"), sp.Function("Y")
     force_per_mass = -derived("brepta1953:12").rhs / (m * rho)  # S/(mρ) along −e_ρ: −(g/l)
     solx = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), force_per_mass * Xf(t)), Xf(t)).rhs
@@ -104,11 +104,24 @@ def small_angle_motion() -> dict:
     return {phi: phi_model, psi: sp.atan2(soly, solx)}
 
 
-@derives("brepta1953:9", mode="substitute", uses=("brepta1953:7", "brepta1953:12"))
+def small_equation_psi_residual() -> sp.Expr:
+    """(7) to leading (second) order in the amplitude: 2φφ̇ψ̇ + φ²ψ̈ (up to a constant factor)."""
+    return leading_order(small(derived("brepta1953:7").lhs))
+
+
+def small_motion_jets() -> dict:
+    """Every small-swing motion, on its jets: φ, φ̇, ψ̇ free, the second derivatives fixed by
+    the reduced equations — φ̈ from (8), ψ̈ from (7) to leading order."""
+    phi2 = sp.solve(derived("brepta1953:8").lhs, D(phi, 2))[0]
+    psi2 = sp.solve(small_equation_psi_residual(), D(psi, 2))[0]
+    return {D(phi, 2): phi2, D(psi, 2): psi2}
+
+
+@derives("brepta1953:9", mode="substitute", uses=("brepta1953:7", "brepta1953:8"))
 def small_equation_psi():
-    """d/dt(φ²ψ̇) = 0 — (7) to leading order in the amplitude — checked on the general
-    small-swing motion (the tangent-plane oscillator), on which it holds identically."""
-    return small_angle_motion()
+    """d/dt(φ²ψ̇) = 0: (7) to leading order in the amplitude.  Checked on the small-swing
+    motions (second derivatives from the reduced equations): the printed relation must follow."""
+    return small_motion_jets()
 
 
 @derives("brepta1953:10", uses=("brepta1953:9",), unknowns=(C,))
@@ -116,7 +129,7 @@ def small_integral_psi():
     """φ²ψ̇ = C: (9) integrated once; C is the value of φ²ψ̇ at t = 0."""
     q = small_angular_momentum()
     # (9) says d/dt of this quantity vanishes: its residual is a constant multiple of dq/dt
-    ratio = sp.simplify(q.diff(t) / leading_order(small(derived("brepta1953:7").lhs)))
+    ratio = sp.simplify(q.diff(t) / small_equation_psi_residual())
     assert ratio.is_number and ratio != 0
     Qf = sp.Function("Q")
     sol = sp.dsolve(sp.Eq(Qf(t).diff(t), 0), Qf(t)).rhs  # Q(t) = C1, a constant

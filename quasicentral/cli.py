@@ -100,6 +100,9 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.add_argument("--json", action="store_true")
     fmt.add_argument("--csv", action="store_true")
 
+    fg = sub.add_parser("figures", help="reproduce the texts' missing figures (CSV data and PNG plots)")
+    fg.add_argument("--out", default="figures", metavar="DIR")
+
     c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
     c.add_argument("--source", choices=sorted(SOURCES))
     c.add_argument("--json", action="store_true")
@@ -241,12 +244,12 @@ def _period(args) -> int:
                 ratio_text = P.period_ratio_rounded(digits=args.dps, **kw)
             else:
                 ratio_text = mpmath.nstr(P.period_ratio_mp(dps=args.dps, method=args.method, terms=args.terms, **kw),
-                                         args.dps)
+                                         args.dps, strip_zeros=False)
             with mpmath.workdps(args.dps + 10):
                 t0 = 2 * mpmath.pi * mpmath.sqrt(mpmath.mpf(args.l) / mpmath.mpf(args.g))
-                out["T"] = mpmath.nstr(t0 * mpmath.mpf(ratio_text), args.dps)
+                out["T"] = mpmath.nstr(t0 * mpmath.mpf(ratio_text), args.dps, strip_zeros=False)
             out["T_over_T0"] = ratio_text
-            out["T0"] = mpmath.nstr(t0, args.dps)
+            out["T0"] = mpmath.nstr(t0, args.dps, strip_zeros=False)
             out["digits"] = args.dps
         else:
             val = {k: finite_float(v, "--" + k.replace("phi0", "amplitude-rad").replace("_", "-")) for k, v in given.items() if v is not None}
@@ -369,7 +372,19 @@ def _times(args, num):
     return times
 
 
-_COMMANDS = {"trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
+def _figures(args) -> int:
+    from . import figures
+
+    try:
+        paths = figures.write_all(Path(args.out))
+    except OSError as exc:
+        raise UsageError(f"cannot write figures to {args.out}: {exc.strerror}") from None
+    for p in paths:
+        print(p)
+    return EXIT_OK
+
+
+_COMMANDS = {"figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
 
 
 def finite_float(text: str, name: str) -> float:

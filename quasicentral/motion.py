@@ -31,7 +31,12 @@ class ParameterError(ValueError):
 
 @dataclass(frozen=True)
 class Ops:
-    """The arithmetic a closed form runs on: numpy ufuncs, or mpmath over object arrays."""
+    """The arithmetic a closed form runs on: numpy ufuncs, or mpmath over object arrays.
+
+    ``two_prod(a, b)`` returns (p, e) with p + e = a·b exactly in double precision (Dekker's
+    splitting) — the phase ωt and the decay κt grow with t, and their rounding would otherwise
+    cost ~10 ulp after a few periods; in mpmath the guard digits make e = 0.
+    """
 
     exp: object
     sin: object
@@ -39,25 +44,51 @@ class Ops:
     sinh: object
     cosh: object
     sqrt: object
-    expm1: object
     asarray: object
+    two_prod: object
 
 
-DOUBLE = Ops(np.exp, np.sin, np.cos, np.sinh, np.cosh, np.sqrt, np.expm1, lambda a: np.asarray(a, dtype=float))
+_SPLIT = 134217729.0  # 2^27 + 1
+
+
+def _split(a):
+    c = _SPLIT * a
+    hi = c - (c - a)
+    return hi, a - hi
+
+
+def _two_prod_double(a, b):
+    p = a * b
+    ah, al = _split(a)
+    bh, bl = _split(b)
+    return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+
+
+DOUBLE = Ops(np.exp, np.sin, np.cos, np.sinh, np.cosh, np.sqrt, lambda a: np.asarray(a, dtype=float),
+             _two_prod_double)
 
 
 def _mp_ops() -> Ops:
     v = lambda f: np.frompyfunc(f, 1, 1)  # noqa: E731
-    return Ops(v(mpmath.exp), v(mpmath.sin), v(mpmath.cos), v(mpmath.sinh), v(mpmath.cosh), v(mpmath.sqrt),
-               v(mpmath.expm1), lambda a: np.array([mpmath.mpf(x) for x in np.ravel(a)], dtype=object))
+    return Ops(v(mpmath.exp), v(mpmath.sin), v(mpmath.cos), v(mpmath.sinh), v(mpmath.cosh), mpmath.sqrt,
+               lambda a: np.array([mpmath.mpf(x) for x in np.ravel(a)], dtype=object), lambda a, b: (a * b, 0 * b))
 
 
 MP = _mp_ops()
 
 
-def _sinc(ops: Ops, z, t):
-    """sin(z)/z · t, with the limit t at z = 0."""
-    return t * ops.sin(z) / z if np.all(z != 0) else np.where(z == 0, t, t * ops.sin(z) / np.where(z == 0, 1, z))
+def _two_sum(a, b):
+    """(s, e) with s + e = a + b exactly (Knuth); e is 0 in mpmath up to its guard digits."""
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+def _dd_sqrt(ops: Ops, hi, lo):
+    """√(hi + lo) as a double-double (r, rl)."""
+    r = ops.sqrt(hi)
+    p, e = ops.two_prod(r, r)
+    return r, ((hi - p) - e + lo) / (2 * r)
 
 
 def linear(t, R0, v0, Omega, kappa, ops: Ops = DOUBLE):
@@ -68,26 +99,37 @@ def linear(t, R0, v0, Omega, kappa, ops: Ops = DOUBLE):
     (0.1, 0.0)
     """
     t = ops.asarray(t)
-    one = t[0] * 0 + 1 if t.size else 1.0
-    R0, v0, Omega, kappa = (one * R0, one * v0, one * Omega, one * kappa)
-    w2 = (Omega - kappa) * (Omega + kappa)
-    damp = ops.exp(-kappa * t)
-    if w2 > 0:
-        w = ops.sqrt(np.asarray([w2], dtype=object if ops is MP else float))[0]
-        c = ops.cos(w * t)
-        s = ops.sin(w * t) / w
+    # ω² = (Ω − κ)(Ω + κ) as a double-double: exact differences, one exact product
+    d1, d1e = _two_sum(Omega, -kappa)
+    d2, d2e = _two_sum(Omega, kappa)
+    w2, w2e = ops.two_prod(d1, d2)
+    w2e = w2e + d1 * d2e + d1e * d2
+    q, qe = ops.two_prod(kappa, t)
+    damp = ops.exp(-q) * (1 - qe)  # e^{−κt}, its exponent's rounding error qe corrected
+    if w2 + w2e > 0:
+        w, wl = _dd_sqrt(ops, w2, w2e)
+        ph, phe = ops.two_prod(w, t)
+        phe = phe + wl * t
+        sn, cs = ops.sin(ph), ops.cos(ph)
+        c = cs - phe * sn
+        s = (sn + phe * cs) / w * (1 - wl / w)
         return R0 * damp * (c + kappa * s), v0 * damp * s
-    if w2 == 0:
+    if w2 + w2e == 0:
         return R0 * damp * (1 + kappa * t), v0 * damp * t
-    mu = ops.sqrt(np.asarray([-w2], dtype=object if ops is MP else float))[0]
-    # e^{−κt} cosh μt = (e^{−(κ−μ)t} + e^{−(κ+μ)t})/2, κ − μ = Ω²/(κ + μ) exactly
+    mu, mul = _dd_sqrt(ops, -w2, -w2e)
+    mt, mte = ops.two_prod(mu, t)
+    mte = mte + mul * t
+    small = mt < 1
+    # e^{−κt} cosh μt = (e^{−(κ−μ)t} + e^{−(κ+μ)t})/2 with κ − μ = Ω²/(κ + μ) (no cancellation);
+    # where μt is small the sinh form is used instead (the difference of exponentials cancels)
     slow = ops.exp(-(Omega * Omega / (kappa + mu)) * t)
     fast = ops.exp(-(kappa + mu) * t)
-    small = mu * t < 1
-    # where μt is small, sinh(μt)/μ = t·(1 + …): the exponential form would cancel
     with np.errstate(over="ignore", invalid="ignore"):
-        ch = np.where(small, damp * ops.cosh(np.where(small, mu * t, 0 * t)), (slow + fast) / 2)
-        sh = np.where(small, damp * ops.sinh(np.where(small, mu * t, 0 * t)) / mu, (slow - fast) / (2 * mu))
+        m_small = np.where(small, mt, 0 * t)
+        e_small = np.where(small, mte, 0 * t)
+        chs, shs = ops.cosh(m_small), ops.sinh(m_small)
+        ch = np.where(small, damp * (chs + e_small * shs), (slow + fast) / 2)
+        sh = np.where(small, damp * (shs + e_small * chs) / mu * (1 - mul / mu), (slow - fast) / (2 * mu))
     return R0 * (ch + kappa * sh), v0 * sh
 
 

@@ -181,9 +181,10 @@ def _complement_sine_mp(phi0, delta, amplitude_deg):
     return mpmath.cos(a / 2)
 
 
-def _exact(text: str, what: str):
+def _exact(text, what: str):
+    """A decimal string read exactly, or a float taken at its exact binary value."""
     try:
-        val = mpmath.mpf(str(text).strip())
+        val = mpmath.mpf(text) if isinstance(text, float) else mpmath.mpf(str(text).strip())
     except (ValueError, TypeError):
         raise DomainError(f"{what} must be a number, not {text!r}") from None
     if not mpmath.isfinite(val):

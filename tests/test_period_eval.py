@@ -1,0 +1,119 @@
+"""Evaluating the exact period: every method against pinned high-precision literals, the
+correctly rounded route against an independent mpmath value, the complement input near π."""
+
+import json
+import math
+from decimal import Decimal, localcontext
+
+import mpmath
+import numpy as np
+import pytest
+
+from quasicentral import period as P
+from quasicentral.cli import main
+
+# T/T0 at 10°, 90°, 179°: 20 digits, pinned (two methods agreed at 60 digits)
+PINNED = {10: "1.0019071881432166070", 90: "1.1803405990160962260", 179: "3.9010651603890857349"}
+TOL = {"agm": 4.5e-16, "ellipk": 9e-16, "quad": 1e-13, "ode": 1e-11}
+
+
+@pytest.mark.parametrize("method", sorted(TOL))
+@pytest.mark.parametrize("deg", [5, 10, 45, 90, 135, 170, 179, 179.9])
+def test_double_methods(method, deg):
+    """Against the exact value *for the double input* (near π the input itself is
+    ill-conditioned, so the reference takes the double's exact binary value)."""
+    phi = math.radians(deg)
+    ref = float(P.period_ratio_mp(phi0=phi, dps=30))
+    val = float(P.period_ratio(phi, method=method))
+    assert abs(val - ref) <= TOL[method] * ref
+
+
+@pytest.mark.parametrize("deg", sorted(PINNED))
+def test_pinned_literals(deg):
+    val = P.period_ratio_mp(amplitude_deg=str(deg), dps=25)
+    assert mpmath.nstr(val, 20, strip_zeros=False) == PINNED[deg]
+
+
+@pytest.mark.parametrize("method", ["agm", "ellipk", "quad", "series"])
+def test_any_precision_methods(method):
+    terms = 400 if method == "series" else 4
+    val = P.period_ratio_mp(amplitude_deg="90", dps=25, method=method, terms=terms)
+    with mpmath.workdps(30):
+        assert abs(val - mpmath.mpf(PINNED[90])) < mpmath.mpf(10) ** -19
+
+
+def test_ode_at_any_precision():
+    val = P.period_ratio_mp(amplitude_deg="10", dps=20, method="ode")
+    assert abs(float(val) - float(PINNED[10])) < 1e-15
+
+
+@pytest.mark.parametrize("digits", [30, 100])
+@pytest.mark.parametrize("deg", ["10", "90", "179", "179.99"])
+def test_correctly_rounded(digits, deg):
+    """The ball route's result is the exact value rounded half-even, checked against mpmath's
+    K at twice the digits."""
+    got = P.period_ratio_rounded(amplitude_deg=deg, digits=digits)
+    with mpmath.workdps(2 * digits + 20):
+        ref = 2 / mpmath.pi * mpmath.ellipk(mpmath.sin(mpmath.mpf(deg) * mpmath.pi / 360) ** 2)
+        text = mpmath.nstr(ref, 2 * digits + 10)
+    with localcontext() as ctx:
+        ctx.prec = digits
+        assert got == str(+Decimal(text))
+
+
+def test_complement_keeps_accuracy_down_to_1e_300():
+    for d in (1e-3, 1e-20, 1e-150, 1e-300):
+        dbl = float(P.period_ratio(delta=d))
+        ref = P.period_ratio_mp(delta=repr(d), dps=30)
+        assert abs(dbl - float(ref)) <= 2.5 * np.spacing(float(ref))
+
+
+def test_series_tail_bound_is_rigorous_and_terms_needed():
+    for deg in (10, 60, 120, 170):
+        m = math.sin(math.radians(deg) / 2) ** 2
+        exact = float(P.period_ratio(math.radians(deg)))
+        for n in (1, 2, 4, 10):
+            approx, tail = P.series_ratio(np.array([m]), n)
+            assert 0 <= exact - approx[0] <= tail[0] * (1 + 1e-12) + 1e-15
+    assert P.terms_needed(math.radians(10), 1e-15) < P.terms_needed(math.radians(90), 1e-15)
+    a = P.first_amplitude_exceeding(4, 1e-3)
+    m = math.sin(a / 2) ** 2
+    approx = P.series_ratio(np.array([m]), 4)[0][0]
+    exact = float(P.period_ratio(a))
+    assert abs((exact - approx) / exact - 1e-3) < 1e-9
+
+
+def test_bad_inputs_raise_domain_errors():
+    for bad in (0.0, math.pi, -1.0, float("nan"), 4.0):
+        with pytest.raises(P.DomainError):
+            P.period_ratio(bad)
+    with pytest.raises(P.DomainError):
+        P.period_ratio(1.0, delta=1.0)
+
+
+def test_cli_period_json(capsys):
+    assert main(["period", "--amplitude-deg", "90", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["method"] == "agm" and abs(doc["T_over_T0"] - float(PINNED[90])) < 1e-15
+    assert main(["period", "--amplitude-deg", "60", "--method", "series", "--terms", "4", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["error_estimate"] > 0 and doc["terms"] == 4
+    assert main(["period", "--complement-rad", "1e-300", "--dps", "30", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["T_over_T0"].startswith("441.085172928572554084051195236")
+
+
+@pytest.mark.parametrize("args", [["--amplitude-deg", "180"], ["--amplitude-deg", "0"], ["--amplitude-rad", "nan"],
+                                  ["--amplitude-deg", "10", "--l", "-1"], [], ["--complement-rad", "-1"]])
+def test_cli_period_bad_input(args, capsys):
+    assert main(["period", *args]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("quasicentral: error:")
+
+
+def test_table_two_methods_agree():
+    rows = P.table(digits=20)
+    assert rows[0]["amplitude_deg"] == "5" and rows[-1]["amplitude_deg"] == "179.99"
+    assert all(r["agree"] for r in rows)
+    pinned = {r["amplitude_deg"]: r["T_over_T0"] for r in rows}
+    assert pinned["90"] == PINNED[90] and pinned["179"] == PINNED[179]
