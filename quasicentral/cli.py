@@ -74,10 +74,10 @@ def build_parser() -> argparse.ArgumentParser:
     amp.add_argument("--complement-rad", metavar="D", help="δ = π − φ0 (full accuracy near π)")
     pe.add_argument("--l", metavar="L", default="1", help="length in m (default 1)")
     pe.add_argument("--g", metavar="G", default="9.81", help="gravity in m/s² (default 9.81)")
-    pe.add_argument("--method", choices=("agm", "series", "ellipk", "quad", "ode"), default="agm")
+    pe.add_argument("--method", choices=("agm", "series", "ellipk", "quad", "ode"), default="ellipk")
     pe.add_argument("--terms", type=_positive_int("--terms", 10**6), default=4, help="terms of the series (66)")
     pe.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
-                    help="decimal digits (inputs read exactly; agm results correctly rounded)")
+                    help="decimal digits (inputs read exactly; agm and ellipk results correctly rounded)")
     pe.add_argument("--table", action="store_true", help="T/T0 from 5° to 179.99° at 20 digits, two methods")
     pe.add_argument("--json", action="store_true")
 
@@ -240,8 +240,8 @@ def _period(args) -> int:
             import mpmath
 
             kw = {k: v for k, v in given.items() if v is not None}
-            if args.method == "agm":
-                ratio_text = P.period_ratio_rounded(digits=args.dps, **kw)
+            if args.method in ("agm", "ellipk"):
+                ratio_text = P.period_ratio_rounded(digits=args.dps, method=args.method, **kw)
             else:
                 ratio_text = mpmath.nstr(P.period_ratio_mp(dps=args.dps, method=args.method, terms=args.terms, **kw),
                                          args.dps, strip_zeros=False)

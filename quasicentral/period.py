@@ -11,8 +11,9 @@ c = cos(φ0/2) = sin(δ/2) directly:
 
 Methods (the same names in double precision and at any precision):
 
-* ``agm`` — the arithmetic-geometric mean (default; exact complement, no cancellation);
-* ``ellipk`` — ``scipy.special.ellipkm1(p)`` / ``mpmath.ellipk``;
+* ``ellipk`` — the default: ``scipy.special.ellipkm1(p)`` with the complement p given exactly
+  (and the asymptote ln(4/c) where p would underflow); ``mpmath.ellipk`` / ``acb.elliptic_k``;
+* ``agm`` — the arithmetic-geometric mean 1/AGM(1, c) (no cancellation either; one ulp more);
 * ``series`` — (66) truncated after N terms, with a rigorous bound of the tail;
 * ``quad`` — quadrature of (60) written with the complement, 1/√(cos²ψ + p sin²ψ);
 * ``ode`` — integration of φ̈ = −(g/l) sin φ from the amplitude to the lowest point.
@@ -66,6 +67,24 @@ def agm_ratio(c: np.ndarray) -> np.ndarray:
     return 1.0 / (0.5 * (a + b))
 
 
+def ellipk_ratio(c: np.ndarray) -> np.ndarray:
+    """2K(1 − c²)/π from the complement: ``scipy.special.ellipkm1(p)``, p = c² given exactly
+    (1.3 ulp); for c < 1e-8 the asymptote K = ln(4/c) + O(c² ln c), exact to rounding there
+    and free of the underflow of c² (δ down to 1e-300)."""
+    from scipy.special import ellipkm1
+
+    c = np.asarray(c, dtype=float)
+    tiny = c < 1e-8
+    if not tiny.any():
+        return TWO_OVER_PI * ellipkm1(c * c)
+    with np.errstate(divide="ignore"):
+        k = np.where(tiny, LN4 - np.log(np.where(tiny, c, 1.0)), ellipkm1(np.where(tiny, 1.0, c * c)))
+    return TWO_OVER_PI * k
+
+
+LN4 = math.log(4.0)
+TWO_OVER_PI = 2 / math.pi
+
 SERIES_MAX_TERMS = 10**7
 
 
@@ -90,16 +109,14 @@ def series_ratio(m: np.ndarray, n_terms: int) -> tuple[np.ndarray, np.ndarray]:
     return total, tail
 
 
-def period_ratio(phi0=None, *, delta=None, method: str = "agm", terms: int = 4):
+def period_ratio(phi0=None, *, delta=None, method: str = "ellipk", terms: int = 4):
     """T/T0 in double precision for scalars or arrays of amplitudes (radians)."""
     c = _complement_sine(phi0, delta)
     if method == "agm":
         return agm_ratio(c)
     p = c * c
     if method == "ellipk":
-        from scipy.special import ellipkm1
-
-        return 2 / math.pi * ellipkm1(p)
+        return ellipk_ratio(c)
     if method == "series":
         m = 1 - p if delta is not None else np.sin(np.asarray(phi0, dtype=float) / 2) ** 2
         return series_ratio(m, terms)[0]
@@ -131,7 +148,7 @@ def _ode_ratio_double(phi0: float) -> float:
 
 # --- any precision ----------------------------------------------------------------------------
 def period_ratio_mp(phi0: str | None = None, *, delta: str | None = None, amplitude_deg: str | None = None,
-                    dps: int = 30, method: str = "agm", terms: int = 4):
+                    dps: int = 30, method: str = "ellipk", terms: int = 4):
     """T/T0 at ``dps`` digits (an mpmath number, computed with guard digits in a local context).
     Inputs are decimal strings read exactly (never rounded through a double)."""
     with mpmath.workdps(dps + 20):
@@ -140,7 +157,9 @@ def period_ratio_mp(phi0: str | None = None, *, delta: str | None = None, amplit
         if method == "agm":
             r = 1 / mpmath.agm(1, c)
         elif method == "ellipk":
-            r = 2 / mpmath.pi * mpmath.ellipk(1 - p)
+            # m = 1 − p needs the digits of p too: raise the precision by p's decimal exponent
+            with mpmath.workdps(dps + 20 + max(0, -int(mpmath.floor(mpmath.log10(p))))):
+                r = 2 / mpmath.pi * mpmath.ellipk(1 - p)
         elif method == "series":
             m = 1 - p
             if not 1 <= terms <= 10**6:
@@ -194,21 +213,26 @@ def _exact(text, what: str):
 
 # --- correctly rounded, with balls -------------------------------------------------------------
 def period_ratio_rounded(*, delta: str | None = None, phi0: str | None = None, amplitude_deg: str | None = None,
-                         digits: int = 30) -> str:
+                         digits: int = 30, method: str = "ellipk") -> str:
     """T/T0 correctly rounded to ``digits`` significant digits (round-half-even), proved with
-    python-flint balls: the precision rises until both ends of the ball round alike."""
+    python-flint balls (``arb.agm`` or ``acb.elliptic_k``): the precision rises until both ends
+    of the ball round alike."""
     import flint
 
     old = flint.ctx.prec
     try:
         prec = int(3.33 * digits) + 32
-        for _ in range(12):
+        for _ in range(16):
             flint.ctx.prec = prec
             c = _complement_sine_arb(phi0, delta, amplitude_deg)
-            ball = 1 / flint.arb(1).agm(c)
-            lo, hi = _round_decimal(ball.lower(), digits), _round_decimal(ball.upper(), digits)
-            if lo == hi:
-                return lo
+            if method == "agm":
+                ball = 1 / flint.arb(1).agm(c)
+            else:
+                ball = (2 * flint.acb.elliptic_k(flint.acb(1 - c * c)) / flint.arb.pi()).real
+            if ball.is_finite():  # near π the ball of 1 − c² may still contain 1
+                lo, hi = _round_decimal(ball.lower(), digits), _round_decimal(ball.upper(), digits)
+                if lo == hi:
+                    return lo
             prec *= 2
         raise ArithmeticError("no convergence of the ball to a correctly rounded value")
     finally:
@@ -239,18 +263,23 @@ def _round_decimal(x, digits: int) -> str:
 
 # --- the series: how many terms ----------------------------------------------------------------
 def terms_needed(phi0: float, tol: float) -> int:
-    """Smallest N for which the truncation of (66) after N terms is within ``tol`` (relative),
-    by the rigorous tail bound."""
+    """Smallest N for which (66) truncated after N terms is within ``tol`` (relative) of T/T0.
+    The neglected tail Σ_{n≥N} c_n mⁿ is summed from its small end (no cancellation)."""
     m = math.sin(phi0 / 2) ** 2
-    exact = float(agm_ratio(np.array([math.cos(phi0 / 2)]))[0])
-    n, total, cn = 0, 0.0, 1.0
-    while n < SERIES_MAX_TERMS:
-        total += cn * m**n if n == 0 or m > 0 else 0.0
-        n += 1
-        cn *= ((2 * n - 1) / (2 * n)) ** 2
-        if abs(exact - total) <= tol * exact:
-            return n
-    raise DomainError("more than 10⁷ terms needed")
+    exact = float(ellipk_ratio(np.array([math.cos(phi0 / 2)]))[0])
+    target = tol * exact
+    # terms until they and their geometric remainder are far below the target
+    n_max = 64
+    while True:
+        terms = series_coefficients(n_max) * m ** np.arange(n_max)
+        if terms[-1] / (1 - m) < 1e-3 * target or n_max >= SERIES_MAX_TERMS:
+            break
+        n_max *= 4
+    tails = np.cumsum(terms[::-1])[::-1] + terms[-1] * m / (1 - m)  # tails[N] = Σ_{n≥N}
+    ok = np.nonzero(tails <= target)[0]
+    if not ok.size:
+        raise DomainError(f"more than {SERIES_MAX_TERMS} terms needed")
+    return int(ok[0])
 
 
 def first_amplitude_exceeding(n_terms: int, tol: float) -> float:
@@ -258,7 +287,7 @@ def first_amplitude_exceeding(n_terms: int, tol: float) -> float:
     from scipy.optimize import brentq
 
     def err(a):
-        exact = float(agm_ratio(np.array([math.cos(a / 2)]))[0])
+        exact = float(ellipk_ratio(np.array([math.cos(a / 2)]))[0])
         approx = float(series_ratio(np.array([math.sin(a / 2) ** 2]), n_terms)[0][0])
         return (exact - approx) / exact - tol
 
@@ -278,7 +307,7 @@ def table(digits: int = 20) -> list[dict]:
     AGM (correctly rounded with balls) and mpmath quadrature of (60); they must agree."""
     rows = []
     for a in TABLE_AMPLITUDES_DEG:
-        agm = period_ratio_rounded(amplitude_deg=a, digits=digits)
+        agm = period_ratio_rounded(amplitude_deg=a, digits=digits, method="agm")
         q = period_ratio_mp(amplitude_deg=a, dps=digits + 10, method="quad")
         with mpmath.workdps(digits + 10):
             agree = abs(q - mpmath.mpf(agm)) <= mpmath.mpf(10) ** (-(digits - 1)) * abs(q)
