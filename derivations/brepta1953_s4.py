@@ -18,13 +18,14 @@ from derivations import brepta1953_s2, brepta1953_s3  # noqa: F401  (register th
 from quasicentral.domain import Domain
 from quasicentral.registry import derived, derives
 from quasicentral.symbols import (A, B, C, D, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, arccotg, g,
-                                  kappa, l, lam, m, n, omega, psi, rho, t, v, v0, vx, vy, x, y)
+                                  kappa, l, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y)
 
 EX, EY = sp.Matrix([1, 0]), sp.Matrix([0, 1])
 #: κ < Ω: the oscillatory case of (18)–(20)
 SMALL_DAMPING = Domain.of(constraints=(sp.StrictLessThan(kappa, Omega),))
-#: (20) over eight half-turns of ωt, whatever κ/Ω
-HALF_TURNS = Domain.of(constraints=(sp.StrictLessThan(kappa, Omega),), time=(0, 8 * sp.pi / omega))
+#: (20) on (19) parametrized by θ = ωt over eight half-turns, 0 < θ < 8π; κ ≥ 0 and ω > 0 drawn
+#: directly (Ω² = κ² + ω² > κ² holds by construction; κ/ω runs from 0 to 30)
+HALF_TURNS = Domain.of(ranges={omega: (sp.Rational(1, 10), 10), th: (0, 8 * sp.pi)}, defaults=False)
 #: κ = Ω: the limit of aperiodic motion, (21), (22)
 CRITICAL = Domain.of(definitions={kappa: Omega})
 #: the characteristic equation is an identity in λ: sample λ too
@@ -328,9 +329,10 @@ def half_turns() -> sp.Expr:
 @derives("brepta1953:20", mode="substitute", uses=("brepta1953:19",), domain=HALF_TURNS)
 def trajectory_small_damping():
     """√(R0²ω²y² + v0²X²) = R0v0 exp(−(κ/ω)[arccotg(v0X/(R0ωy)) + nπ]), X = x − (R0κ/v0)y,
-    n = ⌊ωt/π⌋: checked on the points of (19) over eight half-turns of ωt."""
+    n = ⌊ωt/π⌋: checked on the points of (19), written with θ = ωt, over eight half-turns."""
     x19, y19 = (e.rhs for e in derived("brepta1953:19"))
-    return {x: x19, y: y19, n: half_turns()}
+    at = {t: th / omega}
+    return {x: x19.subs(at), y: y19.subs(at), n: half_turns().subs(at)}
 
 
 def eliminate_time_small_damping() -> sp.Eq:

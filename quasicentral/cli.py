@@ -307,21 +307,28 @@ def _trajectory_run(args, motion, mpmath) -> int:
         omega2 = grav / length
     else:
         raise UsageError("give --omega2, or --l and --g")
-    if args.beta is not None and args.model in ("ellipse", "linear"):
+    quadratic = args.model.startswith("quadratic")
+    if args.beta is not None and not quadratic:
         raise UsageError(f"model {args.model} takes --kappa, not --beta")
+    if args.kappa is not None and quadratic:
+        raise UsageError(f"model {args.model} takes --beta, not --kappa")
+    if quadratic and args.beta is None:
+        raise UsageError(f"model {args.model} needs --beta (quadratic drag, 1/m)")
     kappa = num(args.kappa, "--kappa") if args.kappa is not None else 0
+    beta = num(args.beta, "--beta") if args.beta is not None else 0
     if args.model == "ellipse" and args.kappa is not None and kappa != 0:
         raise UsageError("model ellipse has no drag: leave out --kappa")
     times = _times(args, num)
     try:
-        x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, dps=args.dps)
+        x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, beta, dps=args.dps)
     except motion.ParameterError as exc:
         raise UsageError(str(exc)) from None
     if args.dps:
         fmt = lambda a: mpmath.nstr(a, args.dps, strip_zeros=False)  # noqa: E731
     else:
         fmt = float
-    params = {"R0": args.R0, "v0": args.v0, "omega2": args.omega2, "l": args.l, "g": args.g, "kappa": args.kappa}
+    params = {"R0": args.R0, "v0": args.v0, "omega2": args.omega2, "l": args.l, "g": args.g, "kappa": args.kappa,
+              "beta": args.beta}
     doc = {"model": args.model, "parameters": {k: v for k, v in params.items() if v is not None},
            "t": [fmt(a) for a in times], "x": [fmt(a) for a in x], "y": [fmt(a) for a in y]}
     if args.dps:

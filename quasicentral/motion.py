@@ -168,19 +168,32 @@ def integrate_linear(t, R0, v0, Omega, kappa, rtol=1e-12):
 MODELS = {
     "ellipse": "no drag, small swings: the ellipse of section 3 (13)",
     "linear": "linear drag R = 2κmv, closed form of section 4 (all three regimes)",
+    "quadratic-first-order": "quadratic drag R = mβv², first order in β, closed form valid for all t and k²",
+    "quadratic": "quadratic drag R = mβv², equations (26)–(27) integrated numerically",
 }
 
 
 def trajectory(model: str, t, R0, v0, Omega2, kappa=0, beta=0, dps: int | None = None):
     """(x, y) arrays for a model; with ``dps`` the parameters are mpmath numbers and the
     evaluation runs at that precision (inside a local context)."""
+    from . import quadratic
+
     check_parameters(R0, v0, Omega2, kappa, beta)
+    if model not in MODELS:
+        raise ParameterError(f"unknown model {model!r}; choose from {', '.join(MODELS)}")
     if model == "ellipse":
         kappa = 0
-    elif model != "linear":
-        raise ParameterError(f"unknown model {model!r}; choose from {', '.join(MODELS)}")
     if dps is None:
-        return linear(t, float(R0), float(v0), math.sqrt(float(Omega2)), float(kappa))
+        args = (float(R0), float(v0), math.sqrt(float(Omega2)))
+        if model == "quadratic-first-order":
+            return quadratic.first_order(t, *args, float(beta))
+        if model == "quadratic":
+            return quadratic.integrate_full(t, *args, float(beta))
+        return linear(t, *args, float(kappa))
     with mpmath.workdps(dps + 10):
-        x, y = linear(t, R0, v0, mpmath.sqrt(Omega2), mpmath.mpf(kappa), ops=MP)
-    return x, y
+        Omega = mpmath.sqrt(Omega2)
+        if model == "quadratic-first-order":
+            return quadratic.first_order(t, R0, v0, Omega, mpmath.mpf(beta), ops=quadratic.MP)
+        if model == "quadratic":
+            return quadratic.integrate_full_mp(t, R0, v0, Omega, mpmath.mpf(beta), dps)
+        return linear(t, R0, v0, Omega, mpmath.mpf(kappa), ops=MP)
