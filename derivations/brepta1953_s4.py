@@ -18,7 +18,7 @@ from derivations import brepta1953_s2, brepta1953_s3  # noqa: F401  (register th
 from quasicentral.domain import Domain
 from quasicentral.registry import derived, derives
 from quasicentral.symbols import (A, B, C, D, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, arccotg, g,
-                                  kappa, l, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y)
+                                  kappa, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y)
 
 EX, EY = sp.Matrix([1, 0]), sp.Matrix([0, 1])
 #: κ < Ω: the oscillatory case of (18)–(20)
@@ -97,7 +97,7 @@ def alpha_components():
 def trig_of_angles() -> dict:
     """cos ψ, sin ψ, cos α, sin α solved from the polar position and velocity."""
     out = {}
-    for model, angle, scale in ((polar_position(), psi, rho), (polar_velocity(), alpha, v)):
+    for model, angle in ((polar_position(), psi), (polar_velocity(), alpha)):
         for comp, fn in zip(model, (sp.cos, sp.sin)):
             out[fn(angle)] = sp.solve(sp.Eq(comp, model[comp]), fn(angle))[0]
     return out
@@ -249,6 +249,7 @@ def linear_initial_conditions():
 
 
 def solution_at_zero() -> tuple[sp.Expr, sp.Expr]:
+    """(18) at t = 0."""
     x18, y18 = (e.rhs for e in derived("brepta1953:18"))
     return x18.subs(t, 0), y18.subs(t, 0)
 
@@ -263,7 +264,7 @@ def initial_constants():
     return [sp.Eq(L1, sol[L1]), sp.Eq(N1, sol[N1])]
 
 
-def velocity_of_18(coord: sp.Expr, index: int) -> sp.Expr:
+def velocity_of_18(index: int) -> sp.Expr:
     """d/dt of (18) with the constants L, N of the initial position."""
     consts = {e.lhs: e.rhs for e in derived("brepta1953:initial-constants")}
     return sp.diff(derived("brepta1953:18")[index].rhs.subs(consts), t)
@@ -273,14 +274,14 @@ def velocity_of_18(coord: sp.Expr, index: int) -> sp.Expr:
          domain=SMALL_DAMPING)
 def dx_dt():
     """ẋ = −κe^{−κt}(K sin ωt + R0 cos ωt) + ωe^{−κt}(K cos ωt − R0 sin ωt)."""
-    return sp.Eq(D(x), velocity_of_18(x, 0))
+    return sp.Eq(D(x), velocity_of_18(0))
 
 
 @derives("brepta1953:dy-dt", uses=("brepta1953:18", "brepta1953:initial-constants"), unknowns=(D(y),),
          domain=SMALL_DAMPING)
 def dy_dt():
     """ẏ = −κe^{−κt}M sin ωt + ωe^{−κt}M cos ωt."""
-    return sp.Eq(D(y), velocity_of_18(y, 1))
+    return sp.Eq(D(y), velocity_of_18(1))
 
 
 @derives("brepta1953:initial-velocity", unknowns=(VX0, VY0))
@@ -376,8 +377,8 @@ def critical_kappa() -> sp.Expr:
     return kc
 
 
-@derives("brepta1953:critical-double-root", uses=("brepta1953:characteristic-equation", "brepta1953:critical-condition"),
-         unknowns=(lam,))
+@derives("brepta1953:critical-double-root", unknowns=(lam,),
+         uses=("brepta1953:characteristic-equation", "brepta1953:critical-condition"))
 def critical_double_root():
     """λ₁,₂ = −κ at κ = Ω."""
     omega_c = sp.solve(sp.Eq(critical_kappa(), kappa), Omega)[0]
@@ -393,8 +394,8 @@ def critical_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.E
     return sp.expand(sp.dsolve(derived(eid).subs(Omega, omega_c), coord, ics=ics).rhs)
 
 
-@derives("brepta1953:critical-general-solution", uses=("brepta1953:16", "brepta1953:17", "brepta1953:critical-double-root"),
-         unknowns=(x, y))
+@derives("brepta1953:critical-general-solution", unknowns=(x, y),
+         uses=("brepta1953:16", "brepta1953:17", "brepta1953:critical-double-root"))
 def critical_general_solution():
     """x = e^{−κt}(A + Bt), y = e^{−κt}(C + Dt): dsolve of (16), (17) at κ = Ω."""
     basis = (sp.exp(-kappa * t), t * sp.exp(-kappa * t))

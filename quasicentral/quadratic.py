@@ -151,14 +151,48 @@ def integrate_full(t, R0, v0, Omega, beta, rtol: float = 1e-12):
 
 
 def integrate_full_mp(t, R0, v0, Omega, beta, dps: int):
-    """(26)–(27) with mpmath's Taylor integrator at ``dps`` digits (slow: seconds)."""
+    """(26)–(27) with mpmath's Taylor-series integrator at ``dps`` digits (slow: seconds).
+    A planar swing (v0 = 0) is integrated segment by segment between the zeros of the speed,
+    where |ẋ| = σẋ is analytic (a Taylor method must not step across the kink)."""
     with mpmath.workdps(dps + 10):
+        if v0 == 0:
+            xs = planar_segments(lambda sig: (lambda _t, s: [s[1], -Omega**2 * s[0] - sig * beta * s[1] ** 2]),
+                                 R0, t, 2 * mpmath.pi / Omega)
+            return np.array(xs, dtype=object), np.array([mpmath.mpf(0)] * len(xs), dtype=object)
         f = mpmath.odefun(lambda _t, s: [s[2], s[3], -Omega**2 * s[0] - beta * s[2] * mpmath.hypot(s[2], s[3]),
                                           -Omega**2 * s[1] - beta * s[3] * mpmath.hypot(s[2], s[3])],
                           0, [R0, mpmath.mpf(0), mpmath.mpf(0), v0])
         xs, ys = [], []
         for tt in t:
-            s = f(tt)
-            xs.append(s[0])
-            ys.append(s[1])
+            st = f(tt)
+            xs.append(st[0])
+            ys.append(st[1])
         return np.array(xs, dtype=object), np.array(ys, dtype=object)
+
+
+def planar_segments(rhs_for_sign, x0, times, period):
+    """Integrate a planar swing x(t) from rest at x0 with mpmath, restarting at each turning
+    point (velocity zero).  ``rhs_for_sign(σ)`` gives the right-hand side for (x, ẋ) on a
+    stretch where sign(ẋ) = σ.  Returns x at ``times`` (sorted or not)."""
+    order = sorted(range(len(times)), key=lambda i: times[i])
+    out = [None] * len(times)
+    t0, state = mpmath.mpf(0), [mpmath.mpf(x0), mpmath.mpf(0)]
+    sig = -1 if x0 > 0 else 1
+    h = period / 16
+    k = 0
+    while k < len(order):
+        sol = mpmath.odefun(rhs_for_sign(sig), t0, state)
+        # the next turning point: the first sign change of ẋ after t0, then a root
+        a = t0
+        while True:
+            b = a + h
+            if sig * sol(b)[1] <= 0:
+                break
+            a = b
+        tz = mpmath.findroot(lambda tt: sol(tt)[1], (a, b), solver="anderson")
+        while k < len(order) and mpmath.mpf(times[order[k]]) <= tz:
+            out[order[k]] = sol(mpmath.mpf(times[order[k]]))[0]
+            k += 1
+        state = [sol(tz)[0], mpmath.mpf(0)]
+        t0, sig = tz, -sig
+    return out
