@@ -317,13 +317,17 @@ def cd_variation():
 
 
 def varied_rates(i: int) -> tuple[sp.Expr, sp.Expr]:
-    """(P', Q') from the 2×2 system of the variation of constants (sympy solve)."""
+    """(P', Q') from the 2×2 system of the variation of constants (sympy solve; the ideal speed
+    V = √V² is held as one symbol while solving)."""
     P, Q = ((Af, Bf), (Cf, Df))[i]
     eqs = derived(("brepta1953:AB-variation", "brepta1953:CD-variation")[i])
     p, q = sp.symbols("p q")
+    V = sp.Symbol("V", positive=True)
     sub = {P(t).diff(t): p, Q(t).diff(t): q}
-    sol = sp.solve([e.lhs.subs(sub) - e.rhs for e in eqs], [p, q], dict=True)[0]
-    return sp.trigsimp(sp.factor(sol[p])), sp.trigsimp(sp.factor(sol[q]))
+    system = [(e.lhs - e.rhs).subs(sub).subs(sp.sqrt(speed_squared()), V) for e in eqs]
+    sol = sp.solve(system, [p, q], dict=True)[0]
+    back = {V: sp.sqrt(speed_squared())}
+    return sp.trigsimp(sp.factor(sol[p])).subs(back), sp.trigsimp(sp.factor(sol[q])).subs(back)
 
 
 def speed_squared() -> sp.Expr:
@@ -344,15 +348,6 @@ def integrate_by_speed(rate: sp.Expr) -> sp.Expr:
     return H
 
 
-def paper_radicand(expr: sp.Expr) -> sp.Expr:
-    """Write V² = R₀²Ω² sin² + v₀² cos² as R₀²Ω² − (R₀²Ω² − v₀²) cos² Ωt (sin² = 1 − cos²)."""
-    V2 = speed_squared()
-    c2 = sp.Symbol("c2")
-    alt = sp.expand(V2.subs(sp.sin(THETA) ** 2, 1 - c2)).subs(c2, sp.cos(THETA) ** 2)
-    assert sp.simplify(alt - V2) == 0
-    return expr.subs(V2, alt)
-
-
 @derives("brepta1953:A-integral", uses=("brepta1953:AB-variation",), unknowns=(A_sym,))
 def a_integral():
     """A = βR₀/(3Ω(R₀²Ω² − v₀²)) [R₀²Ω² − (R₀²Ω² − v₀²) cos² Ωt]^{3/2} + C₁:
@@ -371,7 +366,7 @@ def d_integral():
 def t_integral(rate: sp.Expr) -> sp.Expr:
     """∫₀ᵗ rate dt, an unevaluated Integral (the variable keeps the name t, as printed)."""
     c, f = sp.factor_terms(rate).as_independent(t)
-    return c * sp.Integral(paper_radicand(f), (t, 0, t))
+    return c * sp.Integral(f, (t, 0, t))
 
 
 @derives("brepta1953:B-integral-t", uses=("brepta1953:AB-variation",), unknowns=(B_sym,))
@@ -391,13 +386,14 @@ def c_integral_t():
 # --- the substitutions φ = Ωt = π/2 − z, sin z = ζ ------------------------------------------------
 @derives("brepta1953:substitution-theta-z", uses=("brepta1953:B-integral-t",), unknowns=(th, th))
 def substitution_theta_z():
-    """φ = Ωt (the argument of the trigonometric functions in B's integrand) and φ = π/2 − z
-    (the root of sin φ = cos z that maps the lower limit t = 0 to z = π/2)."""
+    """φ = Ωt (the argument of the trigonometric functions in B's integrand) and φ = π/2 − z:
+    of the linear maps φ = a + bz with sin φ ≡ cos z (a = π/2, b = ±1) the one that sends the
+    lower limit t = 0 to z = π/2."""
     integral = derived("brepta1953:B-integral-t").rhs.atoms(sp.Integral).pop()
-    args = {a.args[0] for a in integral.function.atoms(sp.sin, sp.cos)}
-    (phase,) = args
-    roots = sp.solve(sp.Eq(sp.sin(th), sp.cos(z)), th)
-    (root,) = [r for r in roots if r.subs(z, sp.pi / 2) == 0]
+    (phase,) = {a.args[0] for a in integral.function.atoms(sp.sin, sp.cos)}
+    a = sp.solve(sp.sin(th) - sp.cos(0), th)[0]  # sin a = cos 0
+    maps = [a + b * z for b in (1, -1) if sp.simplify(sp.sin(a + b * z) - sp.cos(z)) == 0]
+    (root,) = [mp for mp in maps if mp.subs(z, sp.pi / 2) == 0]
     return [sp.Eq(th, phase), sp.Eq(th, root)]
 
 
@@ -454,7 +450,8 @@ def modulus_form(expr: sp.Expr) -> sp.Expr:
     def change(integral):
         f = integral.function.subs(R0, u / Omega).subs(v0**2, v02)
         f = f.replace(lambda e: isinstance(e, sp.Pow) and e.exp == sp.Rational(1, 2),
-                      lambda e: sp.sqrt(sp.factor(sp.trigsimp(sp.expand(e.base)))))
+                      lambda e: sp.sqrt(sp.factor_terms(sp.expand(
+                          sp.expand(e.base).subs(sp.cos(z) ** 2, 1 - sp.sin(z) ** 2)))))
         c, f = sp.factor_terms(f).as_independent(z)
         return c * sp.Integral(f, *integral.limits)
 
@@ -475,3 +472,430 @@ def c_integral_z():
     """C = (βv₀u/Ω²) ∫_{π/2}^{z} sin² z √(1 − k² sin² z) dz + C₃ (t = (π/2 − z)/Ω, then k²)."""
     eq = derived("brepta1953:C-integral-t")
     return sp.Eq(C_sym, modulus_form(to_amplitude(eq.rhs, upper=z)))
+
+
+# --- sin z = ζ and the reduction to Legendre's integrals -------------------------------------------
+@derives("brepta1953:substitution-zeta", unknowns=(zeta,))
+def substitution_zeta():
+    """ζ = ∫ cos z dz = sin z (so that cos z dz = dζ, ζ = 0 at z = 0)."""
+    return sp.Eq(zeta, sp.integrate(sp.cos(z), (z, 0, z)))
+
+
+@derives("brepta1953:substitution-zeta-C", uses=("brepta1953:substitution-zeta",), unknowns=(zeta,))
+def substitution_zeta_c():
+    """ζ = sin z (the same substitution for C)."""
+    return derived("brepta1953:substitution-zeta")
+
+
+@derives("brepta1953:29", uses=("brepta1953:substitution-zeta", "brepta1953:substitution-theta-z"),
+         unknowns=(zeta,))
+def zeta_of_time():
+    """ζ = sin z with z = π/2 − φ, φ = Ωt: ζ = cos Ωt."""
+    phase, root = (r.rhs for r in derived("brepta1953:substitution-theta-z"))
+    zz = sp.solve(sp.Eq(th, root), z)[0]
+    return sp.Eq(zeta, derived("brepta1953:substitution-zeta").rhs.subs(z, zz).subs(th, phase))
+
+
+def delta(var=z) -> sp.Expr:
+    """Δ = √(1 − k² sin² z)."""
+    return sp.sqrt(1 - k**2 * sp.sin(var) ** 2)
+
+
+def legendre_antiderivative(integrand: sp.Expr, var=z) -> sp.Expr:
+    """G with dG/dz = integrand for integrand = P(sin² z)/Δ, P a polynomial of degree ≤ 2:
+    G = a F(z | k²) + b E(z | k²) + c sin z cos z Δ, the coefficients matched in dG/dz.
+    Valid for every real z (F, E are Legendre's continuous forms in the amplitude)."""
+    a, b, c, S_ = sp.symbols("a b c S_")
+    G = (a * sp.elliptic_f(var, k**2) + b * sp.elliptic_e(var, k**2)
+         + c * sp.sin(var) * sp.cos(var) * delta(var))
+    residual = sp.expand((G.diff(var) - integrand) * delta(var))
+    residual = sp.expand(residual.subs(sp.cos(var) ** 2, 1 - sp.sin(var) ** 2)).subs(sp.sin(var), S_)
+    assert residual.free_symbols & {var} == set(), residual
+    sol = sp.solve(sp.Poly(residual, S_).coeffs(), [a, b, c], dict=True)[0]
+    G = G.subs(sol)
+    check = sp.expand((G.diff(var) - integrand) * delta(var)).subs(sp.cos(var) ** 2, 1 - sp.sin(var) ** 2)
+    assert sp.expand(check) == 0
+    return G
+
+
+def evaluate_amplitude_integrals(expr: sp.Expr) -> sp.Expr:
+    """Replace every ∫_a^b h(z) dz in expr by G(b) − G(a) (legendre_antiderivative)."""
+
+    def close(integral):
+        (var, lo, hi), = integral.limits
+        G = legendre_antiderivative(integral.function, var)
+        return G.subs(var, hi) - G.subs(var, lo)
+
+    return expr.replace(lambda e: isinstance(e, sp.Integral), close)
+
+
+def along_motion(expr: sp.Expr) -> sp.Expr:
+    """The upper limit z of the amplitude integrals set to z = π/2 − Ωt (the whole motion)."""
+    return expr.replace(lambda e: isinstance(e, sp.Integral),
+                        lambda e: sp.Integral(e.function, (e.limits[0][0], e.limits[0][1],
+                                                           e.limits[0][2].subs(z, Z_OF_T))))
+
+
+def amplitude_b() -> sp.Expr:
+    """B(t) = (βR₀u/Ω) ∫_{π/2}^{π/2−Ωt} cos² z Δ dz + C₂ (B-integral-k along the motion)."""
+    return along_motion(derived("brepta1953:B-integral-k").rhs)
+
+
+def amplitude_c() -> sp.Expr:
+    """C(t) = (βv₀u/Ω²) ∫_{π/2}^{π/2−Ωt} sin² z Δ dz + C₃ (C-integral-z along the motion)."""
+    return along_motion(derived("brepta1953:C-integral-z").rhs)
+
+
+def prefactor_and_integral(expr: sp.Expr, const) -> tuple[sp.Expr, sp.Integral]:
+    rest = expr - const
+    (integral,) = rest.atoms(sp.Integral)
+    return sp.simplify(rest / integral), integral
+
+
+def split_by_powers(expr: sp.Expr, const) -> sp.Expr:
+    """∫ P(sin² z)/Δ dz → Σ_j p_j ∫ sin^{2j} z/Δ dz (the integrand with Δ moved to the
+    denominator, expanded in powers of sin z)."""
+    pre, integral = prefactor_and_integral(expr, const)
+    (var, lo, hi), = integral.limits
+    S_ = sp.Symbol("S_")
+    P = sp.expand((integral.function * delta(var)).subs(sp.cos(var) ** 2, 1 - sp.sin(var) ** 2))
+    P = sp.Poly(P.subs(sp.sin(var), S_), S_)
+    total = sum(coef * sp.Integral(sp.sin(var) ** mon[0] / delta(var), (var, lo, hi))
+                for mon, coef in zip(P.monoms(), P.coeffs()))
+    return sp.expand(pre * total) + const
+
+
+def complete_in_zeta(integrand: sp.Expr, var=z) -> sp.Integral:
+    """∫_0^{π/2} h(z) dz in ζ = sin z: one-to-one on [0, π/2], where cos z = √(1 − ζ²) ≥ 0,
+    so dz = dζ/√(1 − ζ²); the integrand h is a function of sin z."""
+    h = integrand.subs(sp.sin(var), zeta)
+    assert var not in h.free_symbols, h
+    den = (1 - zeta**2) * (delta(var) ** 2).subs(sp.sin(var), zeta)  # cos² z Δ² in ζ
+    num = sp.cancel(h**2 / (1 - zeta**2) * den)  # h ≥ 0 on [0, π/2]: h dz = √num/√den dζ
+    assert num.is_polynomial(zeta), num
+    return sp.Integral(sp.sqrt(sp.factor(num)) / sp.sqrt(den), (zeta, 0, 1))
+
+
+def split_limits(expr: sp.Expr) -> sp.Expr:
+    """∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2}; the complete parts are written in ζ (complete_in_zeta)."""
+
+    def split(integral):
+        (var, lo, hi), = integral.limits
+        return sp.Integral(integral.function, (var, 0, hi)) - complete_in_zeta(integral.function, var)
+
+    return expr.replace(lambda e: isinstance(e, sp.Integral) and e.limits[0][1] == sp.pi / 2, split)
+
+
+@derives("brepta1953:B-integral-zeta", uses=("brepta1953:B-integral-k", "brepta1953:substitution-zeta",
+                                           "brepta1953:29"),
+         unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def b_integral_zeta():
+    """B = (βR₀u/Ω) ∫_{π/2}^{z} cos² z Δ dz + C₂ with z = π/2 − Ωt over the whole motion.  With
+    ζ = sin z this is ∫₁^ζ √((1−ζ²)(1−k²ζ²)) dζ only while cos z = √(1 − ζ²) ≥ 0 (0 ≤ Ωt ≤ π)."""
+    return sp.Eq(B_sym, amplitude_b())
+
+
+@derives("brepta1953:B-integral-denominator", uses=("brepta1953:B-integral-zeta",),
+         unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def b_integral_denominator():
+    """The same B with the root moved to the denominator: cos² z Δ = cos² z Δ²/Δ."""
+    pre, integral = prefactor_and_integral(amplitude_b(), C2)
+    (var, lo, hi), = integral.limits
+    moved = sp.Mul(sp.cos(var) ** 2 * delta(var) ** 2, 1 / delta(var))  # evaluates back to cos²Δ
+    return sp.Eq(B_sym, pre * sp.Integral(moved, (var, lo, hi)) + C2)
+
+
+@derives("brepta1953:B-split", uses=("brepta1953:B-integral-denominator", "brepta1953:u-definition"),
+         unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def b_split():
+    """B = βR₀² {∫ dz/Δ − (1+k²) ∫ sin² z dz/Δ + k² ∫ sin⁴ z dz/Δ} + C₂, from π/2 to π/2 − Ωt:
+    cos² z Δ² = 1 − (1+k²) sin² z + k² sin⁴ z."""
+    return sp.Eq(B_sym, split_by_powers(amplitude_b(), C2).subs(u, R0 * Omega))
+
+
+@derives("brepta1953:B-split-limits", uses=("brepta1953:B-split",),
+         unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def b_split_limits():
+    """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (the complete parts in ζ, ∫_0^1)."""
+    return sp.Eq(B_sym, split_limits(derived("brepta1953:B-split").rhs))
+
+
+@derives("brepta1953:integral-limits", mode="substitute", uses=("brepta1953:B-split",))
+def integral_limits():
+    """∫₁^ζ = ∫₁⁰ + ∫₀^ζ = ∫₀^ζ − ∫₀¹ (additivity), applied to the integrand of B-split,
+    f(ζ) = (1 − (1+k²)ζ² + k²ζ⁴)/√((1−ζ²)(1−k²ζ²))."""
+    f = sp.Function("f")
+    R_ = sp.sqrt((1 - zeta**2) * (1 - k**2 * zeta**2))
+    return {f(zeta): (1 - (1 + k**2) * zeta**2 + k**2 * zeta**4) / R_}
+
+
+@derives("brepta1953:C-integral-zeta", uses=("brepta1953:C-integral-z", "brepta1953:substitution-zeta-C",
+                                           "brepta1953:29"),
+         unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def c_integral_zeta():
+    """C = (βv₀u/Ω²) ∫_{π/2}^{z} sin² z Δ dz + C₃ with z = π/2 − Ωt; in ζ = sin z this is
+    (βv₀R₀/Ω) ∫₁^ζ (ζ² − k²ζ⁴)/√((1−ζ²)(1−k²ζ²)) dζ only for 0 ≤ Ωt ≤ π."""
+    return sp.Eq(C_sym, amplitude_c())
+
+
+@derives("brepta1953:C-split", uses=("brepta1953:C-integral-zeta", "brepta1953:u-definition"),
+         unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def c_split():
+    """C = (βv₀R₀/Ω) {∫ sin² z dz/Δ − k² ∫ sin⁴ z dz/Δ} + C₃ (from π/2 to π/2 − Ωt):
+    sin² z Δ² = sin² z − k² sin⁴ z."""
+    return sp.Eq(C_sym, split_by_powers(amplitude_c(), C3).subs(u, R0 * Omega))
+
+
+@derives("brepta1953:C-split-limits", uses=("brepta1953:C-split",),
+         unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
+def c_split_limits():
+    """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (the complete parts in ζ, ∫_0^1)."""
+    return sp.Eq(C_sym, split_limits(derived("brepta1953:C-split").rhs))
+
+
+# --- the closed forms (Legendre, in the amplitude z = π/2 − Ωt) --------------------------------
+@derives("brepta1953:F-definition", mode="substitute")
+def f_definition():
+    """F(k, ζ) := ∫₀^ζ dζ/√((1−ζ²)(1−k²ζ²)) = F(asin ζ | k²): the printed integral must equal the
+    toolkit's Fj (sympy/mpmath elliptic_f with the parameter m = k²) — a test of the convention."""
+    return {}
+
+
+@derives("brepta1953:E-definition", mode="substitute")
+def e_definition():
+    """E(k, ζ) := ∫₀^ζ √((1−k²ζ²)/(1−ζ²)) dζ = E(asin ζ | k²) (convention test of Ej)."""
+    return {}
+
+
+@derives("brepta1953:K-definition", mode="substitute")
+def k_definition():
+    """K := ∫₀¹ dζ/√((1−ζ²)(1−k²ζ²)) = K(k²) (convention test of Kc)."""
+    return {}
+
+
+@derives("brepta1953:Ec-definition", mode="substitute")
+def ec_definition():
+    """E := ∫₀¹ √((1−k²ζ²)/(1−ζ²)) dζ = E(k²) (convention test of Ec)."""
+    return {}
+
+
+@derives("brepta1953:B-reduced", uses=("brepta1953:B-split",), unknowns=(B_sym,), domain=ELLIPTIC_T)
+def b_reduced():
+    """B-split with each ∫_{π/2}^{Z} sin^{2j} z dz/Δ reduced to Legendre's F(Z), E(Z), K, E and
+    sin Z cos Z Δ(Z) (legendre_antiderivative), Z = π/2 − Ωt; the paper's ζ-form equals this for
+    0 ≤ Ωt ≤ π only."""
+    return sp.Eq(B_sym, evaluate_amplitude_integrals(derived("brepta1953:B-split").rhs))
+
+
+@derives("brepta1953:B-final", uses=("brepta1953:B-integral-k",), unknowns=(B_sym,), domain=ELLIPTIC_T)
+def b_final():
+    """B = βR₀² {(k²−1)/(3k²) F(Z) + (1+k²)/(3k²) E(Z) + sin Z cos Z Δ(Z)/3 + (1−k²)/(3k²) K
+    − (1+k²)/(3k²) E} + C₂, Z = π/2 − Ωt: the antiderivative of cos² z Δ found by matching
+    coefficients (a proof by differentiation), taken from π/2 to Z."""
+    return sp.Eq(B_sym, evaluate_amplitude_integrals(amplitude_b()).subs(u, R0 * Omega))
+
+
+@derives("brepta1953:C-reduced", uses=("brepta1953:C-split",), unknowns=(C_sym,), domain=ELLIPTIC_T)
+def c_reduced():
+    """C-split with ∫_{π/2}^{Z} sin² z dz/Δ and ∫ sin⁴ z dz/Δ reduced to F, E, K, E."""
+    return sp.Eq(C_sym, evaluate_amplitude_integrals(derived("brepta1953:C-split").rhs))
+
+
+@derives("brepta1953:C-final", uses=("brepta1953:C-integral-z",), unknowns=(C_sym,), domain=ELLIPTIC_T)
+def c_final():
+    """C = (βv₀R₀/Ω) {(1−k²)/(3k²) F(Z) + (2k²−1)/(3k²) E(Z) − sin Z cos Z Δ(Z)/3 − (1−k²)/(3k²) K
+    − (2k²−1)/(3k²) E} + C₃, Z = π/2 − Ωt (antiderivative of sin² z Δ from π/2 to Z)."""
+    return sp.Eq(C_sym, evaluate_amplitude_integrals(amplitude_c()).subs(u, R0 * Omega))
+
+
+def general_x() -> sp.Expr:
+    """x = A sin Ωt + B cos Ωt with A (A-integral) and B (B-final), constants C₁, C₂ free."""
+    A_ = derived("brepta1953:A-integral").rhs
+    B_ = derived("brepta1953:B-final").rhs
+    return A_ * sp.sin(THETA) + B_ * sp.cos(THETA)
+
+
+def general_y() -> sp.Expr:
+    """y = C sin Ωt + D cos Ωt with C (C-final) and D (D-integral), constants C₃, C₄ free."""
+    C_ = derived("brepta1953:C-final").rhs
+    D__ = derived("brepta1953:D-integral").rhs
+    return C_ * sp.sin(THETA) + D__ * sp.cos(THETA)
+
+
+@derives("brepta1953:28", uses=("brepta1953:A-integral", "brepta1953:B-final"), unknowns=(x,),
+         domain=ELLIPTIC_T)
+def eq28():
+    """x = {βR₀/(3Ω(u²−v₀²)) V³ + C₁} sin Ωt + (βR₀²{…}(Z) + C₂) cos Ωt, V² = u² − (u²−v₀²)cos² Ωt."""
+    return sp.Eq(x, general_x())
+
+
+@derives("brepta1953:30", uses=("brepta1953:C-final", "brepta1953:D-integral"), unknowns=(y,),
+         domain=ELLIPTIC_T)
+def eq30():
+    """y = ((βv₀R₀/Ω){…}(Z) + C₃) sin Ωt + {βv₀/(3Ω²(u²−v₀²)) V³ + C₄} cos Ωt."""
+    return sp.Eq(y, general_y())
+
+
+def conditions_at_start(xg: sp.Expr, yg: sp.Expr) -> dict:
+    """The four constants from x(0) = R₀, y(0) = 0, ẋ(0) = 0, ẏ(0) = v₀ (initial-conditions)."""
+    x0, y0, xd0, yd0 = initial_values()
+    eqs = [sp.Eq(xg.subs(t, 0), x0), sp.Eq(yg.subs(t, 0), y0),
+           sp.Eq(xg.diff(t).subs(t, 0), xd0), sp.Eq(yg.diff(t).subs(t, 0), yd0)]
+    eqs = [sp.Eq(sp.simplify(e.lhs), e.rhs) for e in eqs]
+    sol = sp.solve(eqs, [C1, C2, C3, C4], dict=True)
+    assert len(sol) == 1, sol
+    return {c: sp.factor(v) for c, v in sol[0].items()}
+
+
+def general_constants() -> dict:
+    return conditions_at_start(general_x(), general_y())
+
+
+@derives("brepta1953:C2-C4-conditions", uses=("brepta1953:28", "brepta1953:30", "brepta1953:initial-conditions"),
+         unknowns=(C2, C4), domain=K_ONLY)
+def c2_c4_conditions():
+    """x(0) = B(0) = C₂ = R₀ (the elliptic part vanishes at Z = π/2); y(0) = D(0) = 0 gives
+    βv₀·v₀³/(3Ω²(u²−v₀²)) + C₄ = 0 (V(0) = v₀)."""
+    x0, y0, _, _ = initial_values()
+    eqs = [sp.Eq(sp.simplify(general_x().subs(t, 0)), x0), sp.Eq(sp.simplify(general_y().subs(t, 0)), y0)]
+    return [sp.Eq(C2, sp.solve(eqs[0], C2)[0]), sp.Eq(C4, sp.solve(eqs[1], C4)[0])]
+
+
+@derives("brepta1953:C4", uses=("brepta1953:C2-C4-conditions",), unknowns=(C4,))
+def c4():
+    """C₄ = −βv₀⁴/(3Ω²(u²−v₀²))."""
+    return sp.Eq(C4, general_constants()[C4])
+
+
+@derives("brepta1953:dxdt-condition", uses=("brepta1953:28", "brepta1953:initial-conditions"),
+         unknowns=(D(x), C1), domain=K_ONLY)
+def dxdt_condition():
+    """ẋ(0) = 0 (the start), and ẋ(0) = ΩA(0) = Ω[βR₀v₀³/(3Ω(u²−v₀²)) + C₁] (B'(0) = 0)."""
+    _, _, xd0, _ = initial_values()
+    rate = sp.simplify(general_x().diff(t).subs(t, 0))
+    return [sp.Eq(D(x), xd0), sp.Eq(C1, sp.solve(sp.Eq(rate, xd0), C1)[0])]
+
+
+@derives("brepta1953:C1", uses=("brepta1953:dxdt-condition",), unknowns=(C1,))
+def c1():
+    """C₁ = −βR₀v₀³/(3Ω(u²−v₀²))."""
+    return sp.Eq(C1, general_constants()[C1])
+
+
+@derives("brepta1953:C3", uses=("brepta1953:30", "brepta1953:initial-conditions"),
+         unknowns=(D(y), C3, C3), domain=K_ONLY)
+def c3():
+    """ẏ(0) = v₀ and ẏ(0) = ΩC(0) = ΩC₃ (the elliptic part of C vanishes at t = 0): C₃ = v₀/Ω."""
+    _, _, _, yd0 = initial_values()
+    rate = sp.simplify(general_y().diff(t).subs(t, 0))
+    value = sp.solve(sp.Eq(rate, yd0), C3)[0]
+    return [sp.Eq(D(y), yd0), sp.Eq(C3, value), sp.Eq(C3, general_constants()[C3])]
+
+
+@derives("brepta1953:particular-solution", uses=("brepta1953:28", "brepta1953:30", "brepta1953:C1",
+                                               "brepta1953:C2-C4-conditions", "brepta1953:C3", "brepta1953:C4"),
+         unknowns=(x, y), domain=ELLIPTIC_T)
+def particular_solution():
+    """(28), (30) with C₁ … C₄ from the start: x(t), y(t) to first order in β, every t ≥ 0."""
+    consts = general_constants()
+    return [sp.Eq(x, general_x().subs(consts)), sp.Eq(y, general_y().subs(consts))]
+
+
+# --- the conical start R₀Ω = v₀ ------------------------------------------------------------------
+@derives("brepta1953:conical-condition", mode="condition", uses=("brepta1953:ideal-velocities",))
+def conical_condition():
+    """The speed on the ellipse is constant, V² − v₀² = (R₀²Ω² − v₀²) sin² Ωt = 0, exactly when
+    R₀Ω = v₀ (a circle: the conical pendulum)."""
+    return sp.expand(speed_squared() - v0**2)
+
+
+def conical(expr: sp.Expr) -> sp.Expr:
+    """expr at v₀ = R₀Ω (the radicand V² becomes R₀²Ω²)."""
+    return sp.simplify(expr.subs(v0, R0 * Omega))
+
+
+@derives("brepta1953:conical-x", uses=("brepta1953:forced-x", "brepta1953:conical-condition"),
+         unknowns=(D(x, 2),), domain=CONICAL)
+def conical_x():
+    """ẍ = −Ω²x + βR₀²Ω² sin Ωt (forced-x at v₀ = R₀Ω)."""
+    eq = derived("brepta1953:forced-x")
+    return sp.Eq(eq.lhs, conical(eq.rhs))
+
+
+@derives("brepta1953:conical-y", uses=("brepta1953:forced-y", "brepta1953:conical-condition"),
+         unknowns=(D(y, 2),), domain=CONICAL)
+def conical_y():
+    """ÿ = −Ω²y − βv₀² cos Ωt (forced-y at v₀ = R₀Ω, written with v₀)."""
+    eq = derived("brepta1953:forced-y")
+    return sp.Eq(eq.lhs, conical(eq.rhs))
+
+
+def conical_general(i: int) -> sp.Expr:
+    """Variation of constants for the conical forcing: P = C + ∫₀ᵗ P' dt, Q = C' + ∫₀ᵗ Q' dt
+    (elementary: sympy integrate)."""
+    Pp, Qp = (conical(r) for r in varied_rates(i))
+    tau = sp.Symbol("tau", nonnegative=True)
+    P = sp.integrate(Pp.subs(t, tau), (tau, 0, t))
+    Q = sp.integrate(Qp.subs(t, tau), (tau, 0, t))
+    c_sin, c_cos = ((C1, C2), (C3, C4))[i]
+    return (P + c_sin) * sp.sin(THETA) + (Q + c_cos) * sp.cos(THETA)
+
+
+@derives("brepta1953:31", uses=("brepta1953:conical-x", "brepta1953:AB-variation"), unknowns=(x,),
+         domain=CONICAL)
+def eq31():
+    """x = (βR₀²/2 sin² Ωt + C₁) sin Ωt + [βR₀²(¼ sin 2Ωt − Ωt/2) + C₂] cos Ωt."""
+    return sp.Eq(x, conical_general(0))
+
+
+@derives("brepta1953:32", uses=("brepta1953:conical-y", "brepta1953:CD-variation"), unknowns=(y,),
+         domain=CONICAL)
+def eq32():
+    """y = [−βv₀²/Ω² (Ωt/2 + ¼ sin 2Ωt) + C₃] sin Ωt + (βv₀²/(2Ω²) sin² Ωt + C₄) cos Ωt."""
+    return sp.Eq(y, conical_general(1))
+
+
+def conical_constants() -> dict:
+    return conditions_at_start(conical_general(0), conical_general(1))
+
+
+@derives("brepta1953:conical-C2-C4", uses=("brepta1953:31", "brepta1953:32", "brepta1953:initial-conditions-conical"),
+         unknowns=(C2, C4), domain=CONICAL)
+def conical_c2_c4():
+    """x(0) = C₂ = R₀, y(0) = C₄ = 0."""
+    consts = conical_constants()
+    return [sp.Eq(C2, consts[C2]), sp.Eq(C4, consts[C4])]
+
+
+@derives("brepta1953:conical-C1-C3", uses=("brepta1953:31", "brepta1953:32", "brepta1953:initial-conditions-conical"),
+         unknowns=(C1, C1, C3, C3), domain=CONICAL)
+def conical_c1_c3():
+    """ẋ(0) = ΩC₁ = 0 → C₁ = 0; ẏ(0) = ΩC₃ = v₀ → C₃ = v₀/Ω."""
+    _, _, xd0, yd0 = initial_values()
+    c1_ = sp.solve(sp.Eq(conical_general(0).diff(t).subs(t, 0), xd0), C1)[0]
+    c3_ = sp.solve(sp.Eq(conical_general(1).diff(t).subs(t, 0), yd0), C3)[0]
+    consts = conical_constants()
+    return [sp.Eq(C1, c1_), sp.Eq(C1, consts[C1]), sp.Eq(C3, c3_), sp.Eq(C3, consts[C3])]
+
+
+def conical_particular() -> tuple[sp.Expr, sp.Expr]:
+    consts = conical_constants()
+    return conical_general(0).subs(consts), conical_general(1).subs(consts)
+
+
+@derives("brepta1953:conical-particular-solution", uses=("brepta1953:conical-C2-C4", "brepta1953:conical-C1-C3"),
+         unknowns=(x, y), domain=CONICAL)
+def conical_particular_solution():
+    """x = R₀ cos Ωt + βR₀²(¼ sin 2Ωt − Ωt/2) cos Ωt + βR₀²/2 sin³ Ωt,
+    y = (v₀/Ω) sin Ωt − βv₀²/Ω² (Ωt/2 + ¼ sin 2Ωt) sin Ωt + βv₀²/(2Ω²) sin² Ωt cos Ωt."""
+    xp, yp = conical_particular()
+    return [sp.Eq(x, xp), sp.Eq(y, yp)]
+
+
+@derives("brepta1953:33", mode="substitute", uses=("brepta1953:conical-particular-solution",),
+         domain=CONICAL)
+def after_one_turn():
+    """x(2π/Ω) = R₀ − πβR₀² =: R₁: the conical particular x after one revolution (only the secular
+    term −βR₀²(Ωt/2) cos Ωt survives).  Model: the function x and R₁ := x(2π/Ω)."""
+    xp, _ = conical_particular()
+    return {x.func: sp.Lambda(t, xp), R1: sp.simplify(xp.subs(t, 2 * sp.pi / Omega))}

@@ -48,7 +48,6 @@ ROOT = sp.sqrt(sp.cos(vphi) - sp.cos(phi0))  # the root (54)
 INTEGRAND = 1 / sp.sqrt(1 - KMOD**2 * sp.sin(w) ** 2)  # the integrand of (60)–(63)
 WALLIS = sp.Integral(sp.sin(w) ** (2 * n), (w, 0, sp.pi / 2))  # the left side of (64)
 
-ON_SHELL = Domain()  # m, g, l, φ0 and t over their default ranges (t: four small-swing periods)
 ANGLE_RANGE = Domain.of(ranges={vphi: (-phi0, phi0)})  # the angle swings between −φ0 and φ0
 ANY_ANGLE = Domain.of(ranges={vphi: (-2 * sp.pi, 2 * sp.pi)})
 PSI_ALL = Domain.of(ranges={w: (-sp.pi, sp.pi)})
@@ -372,22 +371,20 @@ def substitution():
 def angle_of_w() -> sp.Expr:
     """φ(ψ) solved from (57) on the branch with φ(0) = 0: 2 asin(sin(φ0/2) sin ψ); it maps
     ψ ∈ [0, π/2] increasingly onto [0, φ0]."""
-    (rel,) = catalog_substitution()
+    (rel,) = derived_substitution()
     sols = sp.solve(rel, vphi)
     (branch,) = [s_ for s_ in sols if sp.simplify(s_.subs(w, 0)) == 0]
     return branch
 
 
-def catalog_substitution():
-    """The substitution (57) as the derivation states it: sin(φ/2) = k sin ψ (k = sin(φ0/2)),
-    the root x = a sin ψ of a² − x² = a² cos²ψ that increases with ψ."""
+def derived_substitution():
+    """The substitution (57) as derived: the root x of a² − x² = a² cos²ψ (a = sin(φ0/2),
+    x = sin(φ/2)) that rises with ψ — sympy gives ±a|sin ψ| — continued analytically through
+    ψ = 0 (|sin ψ| = sin ψ on [0, π/2]): sin(φ/2) = sin(φ0/2) sin ψ."""
     x = sp.Symbol("x")
-    sols = sp.solve(sp.Eq(KMOD**2 - x**2, KMOD**2 * sp.cos(w) ** 2), x)
-    # the two roots are ±√(a²(1 − cos²ψ)); the increasing one is a sin ψ
-    inc = [s_ for s_ in sols if sp.N(sp.diff(s_, w).subs({w: sp.Rational(1, 3), phi0: 1})) > 0]
-    (root,) = inc
-    root = sp.trigsimp(sp.powdenest(sp.factor_terms(root), force=True))  # ψ ∈ [0, π/2]: sin ψ ≥ 0
-    root = root.subs(sp.sqrt(sp.sin(w) ** 2), sp.sin(w)).subs(sp.Abs(sp.sin(w)), sp.sin(w))
+    roots = sp.solve(sp.Eq(KMOD**2 - x**2, KMOD**2 * sp.cos(w) ** 2), x)
+    (root,) = [r for r in roots if sp.N(r.subs({w: sp.Rational(1, 3), phi0: 1})) > 0]
+    root = root.replace(sp.Abs, lambda a: a)
     return (sp.Eq(sp.sin(vphi / 2), root),)
 
 

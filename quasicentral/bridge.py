@@ -28,6 +28,21 @@ MPMATH_NAMES = {
 }
 
 
+def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
+    """Replace each infinite ``Sum`` by the closed form sympy finds for it (lambdify cannot
+    evaluate an infinite sum, and ``mpmath.nsum`` loses accuracy near the radius of
+    convergence); a sum sympy cannot close stays, and its evaluation then fails honestly."""
+    def close(sm):
+        if any(lim[2] in (sp.oo, -sp.oo) or lim[1] in (sp.oo, -sp.oo) for lim in sm.limits):
+            done = sm.doit()
+            # a Piecewise closed form whose "otherwise" branch keeps the Sum is fine: the
+            # branch is evaluated only outside the region of convergence
+            return sm if isinstance(done, sp.Sum) else done
+        return sm
+
+    return expr.replace(lambda e: isinstance(e, sp.Sum), close)
+
+
 def to_jets(expr: sp.Basic) -> sp.Basic:
     """Evaluate time derivatives of expressions, then name each function jet by a symbol."""
     expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())

@@ -196,8 +196,8 @@ def _jet_ranges(syms) -> dict:
 
 def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
     defs = domain.definition_map()
-    p = bridge.to_jets(substitute_definitions(claim.printed, defs))
-    d = bridge.to_jets(substitute_definitions(claim.derived, defs))
+    p = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.printed, defs)))
+    d = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.derived, defs)))
     scale = bridge.to_jets(substitute_definitions(claim.scale, defs)) if claim.scale is not None else None
     syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
     try:

@@ -103,6 +103,19 @@ def build_parser() -> argparse.ArgumentParser:
     fg = sub.add_parser("figures", help="reproduce the texts' missing figures (CSV data and PNG plots)")
     fg.add_argument("--out", default="figures", metavar="DIR")
 
+    rp = sub.add_parser("report", help="LaTeX reports (or handouts) regenerated from the verified derivations")
+    rp.add_argument("--out", default="reports", metavar="DIR", help="output directory (default reports)")
+    rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk")
+    rp.add_argument("--lang", choices=("en", "cs"), default="en", help="language (default en)")
+    rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
+    rp.add_argument("--all", action="store_true",
+                    help="every golden document: the reports (en) and the handouts (en, cs)")
+
+    sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
+    sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
+    sc.add_argument("--json", action="store_true")
+    sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
+
     c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
     c.add_argument("--source", choices=sorted(SOURCES))
     c.add_argument("--json", action="store_true")
@@ -379,6 +392,26 @@ def _times(args, num):
     return times
 
 
+def _scene(args) -> int:
+    """Exit 0 when a model meets the scene's tolerance, 1 when none does, 2 on a bad scene."""
+    from . import scenes
+
+    try:
+        decision = scenes.decide(scenes.load(args.file))
+    except scenes.SceneError as exc:
+        raise UsageError(str(exc)) from None
+    if args.plot:
+        try:
+            scenes.plot(decision, Path(args.plot))
+        except OSError as exc:
+            raise UsageError(f"cannot write {args.plot}: {exc.strerror or exc}") from None
+    if args.json:
+        print(json.dumps(scenes.document(decision), ensure_ascii=False))
+    else:
+        print(scenes.report(decision))
+    return EXIT_OK if decision.meets else EXIT_UNEXPECTED
+
+
 def _figures(args) -> int:
     from . import figures
 
@@ -391,7 +424,42 @@ def _figures(args) -> int:
     return EXIT_OK
 
 
-_COMMANDS = {"figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
+def _report(args) -> int:
+    from . import report
+
+    if args.all and (args.handout or args.lang != "en"):
+        raise UsageError("--all writes every document: leave out --handout and --lang")
+    out = Path(args.out)
+    try:
+        report.check_writable(out)
+    except OSError as exc:
+        raise UsageError(f"cannot write to {args.out}: {exc.strerror or exc}") from None
+    if args.all:
+        jobs = [(("report",), ("en",)), (("handout",), ("en", "cs"))]
+    else:
+        jobs = [(("handout",) if args.handout else ("report",), (args.lang,))]
+    outcomes = report.outcomes_for_all()
+    docs: dict[str, str] = {}
+    for kinds, langs in jobs:
+        docs.update(report.generate(kinds, langs, outcomes))
+    try:
+        paths = report.write(out, dict(sorted(docs.items())))
+    except OSError as exc:
+        raise UsageError(f"cannot write to {args.out}: {exc.strerror or exc}") from None
+    for p in paths:
+        print(p)
+    if args.pdf:
+        try:
+            pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE])
+        except report.LatexError as exc:
+            print(f"quasicentral: error: {exc}", file=sys.stderr)
+            return EXIT_UNEXPECTED
+        for p in pdfs:
+            print(p)
+    return EXIT_OK
+
+
+_COMMANDS = {"scene": _scene, "report": _report, "figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
 
 
 def finite_float(text: str, name: str) -> float:

@@ -1,0 +1,538 @@
+"""Rendering in the paper's notation: a LaTeX printer, a Unicode-to-LaTeX text escaper, and the
+preparation of the catalog's verbatim LaTeX for a display.
+
+Rendering is separate from derivation (sympy's ``LatexPrinter`` subclassed, as
+``VectorLatexPrinter`` does for mechanics):
+
+* :class:`PaperLatexPrinter` writes functions of t without "(t)", time derivatives with
+  Newton's dots (ẋ, ẍ), ρ as ϱ (``\\varrho``), φ as φ (``\\varphi``), the elliptic integrals in
+  the paper's Jacobi form F(k, ζ), E(k, ζ), K, E (``elliptic_f(asin(ζ), k**2)`` is F(k, ζ):
+  sympy takes the *parameter* m = k² and the amplitude, the paper the *modulus* k and ζ = sin of
+  the amplitude), ``π/2 − atan a`` as arccotg a, and the checker's jet symbols (``phi_t1``) as
+  the derivatives they stand for, so nothing of the machinery shows.
+* :func:`text` turns prose with Unicode mathematics (ρ, ψ̇, ², √, ∫, −, ·, ≤ …) into LaTeX for
+  pdfLaTeX: one function, one table.
+* :func:`display_rows` splits a catalog entry's printed LaTeX into the rows of one display and
+  balances ``\\left``/``\\right`` pairs that the print splits over lines, so that every entry
+  compiles as printed.
+
+>>> from quasicentral import symbols as S
+>>> paper_latex(S.rho**2 * S.D(S.psi))
+'\\\\varrho^{2} \\\\dot{\\\\psi}'
+>>> paper_latex(S.Fj(S.k, S.zeta))
+'F\\\\left(k, \\\\zeta\\\\right)'
+>>> text("ρ̈ − ρψ̇²")
+'\\\\ensuremath{\\\\ddot{\\\\varrho}} \\\\ensuremath{-} \\\\ensuremath{\\\\varrho \\\\dot{\\\\psi}^{2}}'
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.printing.latex import LatexPrinter
+
+from . import symbols as S
+
+# --- the printer ------------------------------------------------------------------------------
+
+#: Names of the motion's functions of t (and of their jets) in the paper's notation.
+FUNCTION_NAMES = {"x": "x", "y": "y", "rho": r"\varrho", "psi": r"\psi", "phi": r"\varphi", "s": "s", "v": "v"}
+
+#: Symbols whose printed name differs from what sympy would write.
+SYMBOL_NAMES = {
+    "rho": r"\varrho", "phi": r"\varphi", "vphi": r"\varphi", "theta": r"\varphi", "w": r"\psi",
+    "K_1": "K", "L_1": "L", "M_1": "M", "N_1": "N", "k2": "k^{2}", "Cst": "C", "T_kin": "T",
+    "y_p": "y", "dvphi": r"d\varphi", "dw": r"d\psi", "n_s": "n",
+}
+
+#: sympy functions defined by the derivations, by class name.
+NAMED_FUNCTIONS = {"pendulum_angle": r"\Phi", "pendulum_rate": r"\Psi"}
+
+_DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
+
+
+class _Arccotg(sp.Function):
+    """Placeholder for printing π/2 − atan a as the paper's arccotg a (values in (0, π))."""
+
+    nargs = 1
+
+
+class PaperLatexPrinter(LatexPrinter):
+    """sympy's LaTeX printer speaking the paper's notation (see the module docstring)."""
+
+    _default_settings = {**LatexPrinter._default_settings, "ln_notation": True, "fold_func_brackets": True,
+                         "inv_trig_style": "full"}
+
+    # names
+    def _print_Symbol(self, expr, style="plain"):
+        from .bridge import is_jet
+
+        if is_jet(expr):
+            name, order = expr.name.rsplit("_t", 1)
+            base = FUNCTION_NAMES.get(name, self._deal_with_super_sub(name))
+            return self._dotted(base, int(order))
+        if expr.name in SYMBOL_NAMES:
+            return SYMBOL_NAMES[expr.name]
+        return super()._print_Symbol(expr, style=style)
+
+    def _dotted(self, base: str, order: int) -> str:
+        if order == 0:
+            return base
+        if order in _DOTS:
+            return f"{_DOTS[order]}{{{base}}}"
+        return f"{base}^{{({order})}}"
+
+    def _print_Function(self, expr, exp=None):
+        if isinstance(expr, AppliedUndef):
+            name = expr.func.__name__
+            base = FUNCTION_NAMES.get(name, self._deal_with_super_sub(name))
+            if expr.args == (S.t,):
+                return base if exp is None else f"{base}^{{{exp}}}"
+            args = ", ".join(self._print(a) for a in expr.args)
+            tex = f"{base}\\left({args}\\right)"
+            return tex if exp is None else f"{tex}^{{{exp}}}"
+        name = type(expr).__name__
+        if name in NAMED_FUNCTIONS:
+            args = ", ".join(self._print(a) for a in expr.args)
+            head = NAMED_FUNCTIONS[name] if exp is None else f"{NAMED_FUNCTIONS[name]}^{{{exp}}}"
+            return f"{head}\\left({args}\\right)"
+        return super()._print_Function(expr, exp)
+
+    def _print__Arccotg(self, expr, exp=None):
+        a = expr.args[0]
+        arg = self._print(a)
+        if not (isinstance(a, AppliedUndef) and a.args == (S.t,)) and self._needs_function_brackets(a):
+            arg = rf"\left({arg}\right)"
+        head = r"\arccotg" if exp is None else rf"\arccotg^{{{exp}}}"
+        return f"{head} {arg}"
+
+    # derivatives
+    def _is_time_derivative(self, expr) -> bool:
+        return all(v == S.t for v, _ in expr.variable_count)
+
+    def _print_Derivative(self, expr):
+        if not self._is_time_derivative(expr):
+            return super()._print_Derivative(expr)
+        order = expr.derivative_count
+        f = expr.expr
+        if isinstance(f, AppliedUndef) and f.args == (S.t,):
+            return self._dotted(self._print(f), order)
+        op = r"\frac{d}{dt}" if order == 1 else rf"\frac{{d^{{{order}}}}}{{dt^{{{order}}}}}"
+        return rf"{op} \left[{self._print(f)}\right]"
+
+    def _print_Subs(self, subs):
+        expr, old, new = subs.args
+        if isinstance(expr, sp.Derivative) and tuple(old) == (S.t,) and self._is_time_derivative(expr):
+            return rf"{self._print(expr)}\left({self._print(new[0])}\right)"
+        return super()._print_Subs(subs)
+
+    # the paper's arccotg
+    def _print_Add(self, expr, order=None):
+        half_pi = sp.pi / 2
+        args = list(expr.args)
+        if half_pi in args:
+            for a in args:
+                if isinstance(a, sp.Mul) and len(a.args) == 2 and a.args[0] == -1 and isinstance(a.args[1], sp.atan):
+                    rest = [b for b in args if b is not a and b != half_pi]
+                    new = _Arccotg(a.args[1].args[0])
+                    if not rest:
+                        return self._print(new)
+                    return super()._print_Add(sp.Add(*rest, new, evaluate=False), order)
+        return super()._print_Add(expr, order)
+
+    # the paper's elliptic notation: modulus k, sine of the amplitude ζ
+    def _modulus(self, m):
+        if m == S.k2:
+            return S.k
+        if isinstance(m, sp.Pow) and m.exp == 2:
+            return m.base
+        return sp.sqrt(m)
+
+    def _complete(self, letter: str, m, exp=None) -> str:
+        k = self._modulus(m)
+        head = letter if exp is None else f"{letter}^{{{exp}}}"
+        return head if k == S.k else rf"{head}\left({self._print(k)}\right)"
+
+    def _incomplete(self, letter: str, phi, m, exp=None) -> str:
+        if phi == sp.pi / 2:
+            return self._complete("K" if letter == "F" else "E", m, exp)
+        zeta = phi.args[0] if isinstance(phi, sp.asin) else sp.sin(phi)
+        head = letter if exp is None else f"{letter}^{{{exp}}}"
+        return rf"{head}\left({self._print(self._modulus(m))}, {self._print(zeta)}\right)"
+
+    def _print_elliptic_k(self, expr, exp=None):
+        return self._complete("K", expr.args[0], exp)
+
+    def _print_elliptic_f(self, expr, exp=None):
+        return self._incomplete("F", expr.args[0], expr.args[1], exp)
+
+    def _print_elliptic_e(self, expr, exp=None):
+        if len(expr.args) == 1:
+            return self._complete("E", expr.args[0], exp)
+        return self._incomplete("E", expr.args[0], expr.args[1], exp)
+
+
+def paper_latex(expr, **settings) -> str:
+    """``expr`` in the paper's notation (see :class:`PaperLatexPrinter`)."""
+    return PaperLatexPrinter(settings).doprint(expr)
+
+
+def relation_lines(rel, width: int = 150) -> list[str]:
+    """A derived relation (``Eq``, expression, or substitution pair) as one or more display
+    lines, broken before top-level + and − of the right side so that long results fit a page.
+    Lines are meant for ``aligned``: the first holds ``&=``, the rest start with ``&\\quad``."""
+    if isinstance(rel, tuple):
+        lhs, rhs, rel_sym = rel[0], rel[1], r"\mapsto"
+    elif isinstance(rel, sp.Eq):
+        lhs, rhs, rel_sym = rel.lhs, rel.rhs, "="
+    else:
+        lhs, rhs, rel_sym = None, rel, ""
+    left = paper_latex(lhs) if lhs is not None else ""
+    whole = paper_latex(rhs)
+    if len(whole) + len(left) <= width or not isinstance(rhs, sp.Add):
+        return [f"{left} &{rel_sym} {whole}".strip()]
+    printer = PaperLatexPrinter()
+    terms = printer._as_ordered_terms(rhs)
+    lines, cur = [], ""
+    for i, term in enumerate(terms):
+        if i == 0:
+            piece = printer._print(term)
+        elif term.could_extract_minus_sign():
+            piece = " - " + printer._print(-term)
+        else:
+            piece = " + " + printer._print(term)
+        if cur and len(cur) + len(piece) > width:
+            lines.append(cur)
+            cur = piece
+        else:
+            cur += piece
+    lines.append(cur)
+    out = [f"{left} &{rel_sym} {lines[0]}".strip()]
+    out += [rf"&\quad {line}" for line in lines[1:]]
+    return out
+
+
+# --- prose: Unicode mathematics to LaTeX -------------------------------------------------------
+
+#: One table: a character of prose and its LaTeX in math mode (None: text-mode replacement below).
+MATH_CHARS = {
+    "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "ζ": r"\zeta",
+    "η": r"\eta", "θ": r"\theta", "ϑ": r"\vartheta", "κ": r"\kappa", "λ": r"\lambda", "μ": r"\mu",
+    "ν": r"\nu", "ξ": r"\xi", "π": r"\pi", "ρ": r"\varrho", "ϱ": r"\varrho", "σ": r"\sigma",
+    "τ": r"\tau", "φ": r"\varphi", "ϕ": r"\phi", "χ": r"\chi", "ψ": r"\psi", "ω": r"\omega",
+    "Γ": r"\Gamma", "Δ": r"\Delta", "Θ": r"\Theta", "Λ": r"\Lambda", "Ξ": r"\Xi", "Π": r"\Pi",
+    "Σ": r"\Sigma", "Φ": r"\Phi", "Ψ": r"\Psi", "Ω": r"\Omega",
+    "−": "-", "±": r"\pm", "∓": r"\mp", "·": r"\cdot", "×": r"\times", "÷": r"\div",
+    "√": r"\surd", "∫": r"\int", "∂": r"\partial", "∑": r"\sum", "∏": r"\prod", "∞": r"\infty",
+    "∅": r"\emptyset", "∈": r"\in", "∉": r"\notin", "≈": r"\approx", "≐": r"\doteq", "≠": r"\neq",
+    "≤": r"\le", "≥": r"\ge", "≡": r"\equiv", "∼": r"\sim", "→": r"\rightarrow", "←": r"\leftarrow",
+    "⇒": r"\Rightarrow", "↦": r"\mapsto", "⌊": r"\lfloor", "⌋": r"\rfloor", "⌈": r"\lceil",
+    "⌉": r"\rceil", "⟨": r"\langle", "⟩": r"\rangle", "‖": r"\|", "½": r"\tfrac{1}{2}",
+    "¼": r"\tfrac{1}{4}", "¾": r"\tfrac{3}{4}", "°": r"^{\circ}", "′": r"'", "ℓ": r"\ell",
+    "ṙ": r"\dot{r}", "ẋ": r"\dot{x}", "ẍ": r"\ddot{x}", "ẏ": r"\dot{y}", "ÿ": r"\ddot{y}",
+    "ż": r"\dot{z}",
+}
+SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ⁿⁱ", "0123456789+-ni"))
+SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋ₙₘₖ", "0123456789+-nmk"))
+COMBINING = {"\u0307": r"\dot", "\u0308": r"\ddot", "\u0302": r"\hat", "\u0304": r"\bar", "\u20d7": r"\vec"}
+#: Text-mode replacements for characters that are special to TeX or absent from T1 fonts.
+TEXT_CHARS = {
+    "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
+    "%": r"\%", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "_": r"\_",
+    "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}", '"': r"\textquotedbl{}",
+    "–": "--", "—": "---", "…": r"\dots{}", "„": r"\quotedblbase{}", "“": r"\textquotedblleft{}",
+    "”": r"\textquotedblright{}", "‘": "`", "’": "'", "\u00a0": "~", "\t": " ",
+}
+_WORD = re.compile(r"[A-Za-z]")
+
+
+def _scan_braced(s: str, i: int) -> tuple[str, int]:
+    """The content of the balanced {...} group starting at s[i] == '{', and the index after it."""
+    depth, j = 0, i
+    while j < len(s):
+        if s[j] == "{":
+            depth += 1
+        elif s[j] == "}":
+            depth -= 1
+            if depth == 0:
+                return s[i + 1:j], j + 1
+        j += 1
+    return s[i + 1:], len(s)
+
+
+def _math(s: str) -> str:
+    """A short run of prose mathematics (inside ^{...} or _{...}) in math mode."""
+    out = []
+    for ch in s:
+        if ch in MATH_CHARS:
+            out.append(MATH_CHARS[ch] + (" " if MATH_CHARS[ch][-1].isalpha() else ""))
+        elif ch in SUPERSCRIPTS:
+            out.append("^{" + SUPERSCRIPTS[ch] + "}")
+        elif ch in SUBSCRIPTS:
+            out.append("_{" + SUBSCRIPTS[ch] + "}")
+        elif ch in COMBINING and out:
+            out[-1] = f"{COMBINING[ch]}{{{out[-1].strip()}}}"
+        elif ch in "{}":
+            out.append("\\" + ch)
+        elif ch.isalnum() or ch in "+-=()[]/.,;:!?' *<>|":
+            out.append(ch)
+        else:
+            out.append(TEXT_CHARS.get(ch, ch) if ch.isascii() else r"\text{" + ch + "}")
+    return "".join(out).strip()
+
+
+def text(s: str) -> str:
+    """Prose with Unicode mathematics as LaTeX for pdfLaTeX (T1 fonts, UTF-8 input).
+
+    Greek letters, operators, super- and subscript digits and combining dots become math
+    (``\\ensuremath``); ``a_b``/``a^{b}`` become sub- and superscripts; every character special
+    to TeX is escaped.  Letters with diacritics that T1 has (Czech) pass through.
+    """
+    tokens: list[tuple[bool, str]] = []  # (is_math, latex)
+
+    def push(is_math: bool, tex: str) -> None:
+        tokens.append((is_math, tex))
+
+    i, n = 0, len(s)
+    while i < n:
+        ch = s[i]
+        if ch in COMBINING:
+            # a dot over the previous character: make it math and decorate it
+            if tokens:
+                was_math, prev = tokens.pop()
+                base = prev if was_math else prev[-1:]
+                rest = "" if was_math else prev[:-1]
+                if rest:
+                    push(False, rest)
+                # decorate the last atom of a math run
+                m = re.search(r"(\\[A-Za-z]+|\\[a-z]+\{[^{}]*\}|[A-Za-z0-9])$", base)
+                if m:
+                    push(True, base[:m.start()] + f"{COMBINING[ch]}{{{m.group(1)}}}")
+                else:
+                    push(True, base)
+            i += 1
+        elif ch in MATH_CHARS:
+            tex = MATH_CHARS[ch]
+            push(True, tex + (" " if tex[-1].isalpha() and i + 1 < n and (s[i + 1].isalnum()) else ""))
+            i += 1
+        elif ch in SUPERSCRIPTS or ch in SUBSCRIPTS:
+            table, mark = (SUPERSCRIPTS, "^") if ch in SUPERSCRIPTS else (SUBSCRIPTS, "_")
+            j = i
+            while j < n and s[j] in table:
+                j += 1
+            push(True, mark + "{" + "".join(table[c] for c in s[i:j]) + "}")
+            i = j
+        elif ch in "^_" and i + 1 < n and (s[i + 1] == "{" or s[i + 1].isalnum() or s[i + 1] in MATH_CHARS):
+            if s[i + 1] == "{":
+                inner, j = _scan_braced(s, i + 1)
+            else:
+                j = i + 1
+                while j < n and (s[j].isalnum() or s[j] in MATH_CHARS or s[j] in COMBINING) and not (
+                        ch == "^" and s[j].isalpha() and s[j].isascii() and j > i + 1):
+                    j += 1
+                inner = s[i + 1:j]
+            push(True, ch + "{" + _math(inner) + "}")
+            i = j
+        elif ch == "*" and s[i:i + 2] == "**":
+            push(False, "**")
+            i += 2
+        elif ch in TEXT_CHARS:
+            push(False, TEXT_CHARS[ch])
+            i += 1
+        elif ch == "\n":
+            push(False, " ")
+            i += 1
+        else:
+            push(False, ch)
+            i += 1
+    return _join(tokens)
+
+
+def escape(s: str) -> str:
+    r"""Plain text (identifiers, file names) with TeX's special characters escaped, no mathematics.
+
+    >>> print(escape("derivations.brepta1953_s2 {50%}"))
+    derivations.brepta1953\_s2 \{50\%\}
+    """
+    return "".join(TEXT_CHARS.get(ch, ch) if ch.isascii() else text(ch) for ch in s)
+
+
+def with_math(s: str) -> str:
+    r"""Prose that may hold inline mathematics between ``$`` signs (catalog notes and titles):
+    the mathematics is kept as written, the rest goes through :func:`text`.  An odd number of
+    ``$`` means they are not delimiters: everything is prose then.
+
+    >>> print(with_math(r"silou $R = 2\kappa mv$ a κ"))
+    silou $R = 2\kappa mv$ a \ensuremath{\kappa}
+    """
+    parts = s.split("$")
+    if len(parts) % 2 == 0:
+        return text(s)
+    return "".join(text(p) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
+
+
+def _join(tokens: list[tuple[bool, str]]) -> str:
+    """Merge runs of math tokens (and single letters glued to them) into one \\ensuremath."""
+    # a lone ASCII letter touching math (ρψ̇, a_ρ, e^{...}) reads as a variable: make it math
+    merged: list[tuple[bool, str]] = []
+    for k, (is_math, tex) in enumerate(tokens):
+        if not is_math and len(tex) == 1 and _WORD.match(tex):
+            prev_math = k > 0 and tokens[k - 1][0]
+            next_math = k + 1 < len(tokens) and tokens[k + 1][0]
+            prev_letter = k > 0 and not tokens[k - 1][0] and tokens[k - 1][1][-1:].isalpha()
+            next_letter = k + 1 < len(tokens) and not tokens[k + 1][0] and tokens[k + 1][1][:1].isalpha()
+            if (prev_math or next_math) and not prev_letter and not next_letter:
+                is_math = True
+        if merged and merged[-1][0] == is_math:
+            a = merged[-1][1]
+            sep = " " if is_math and re.search(r"\\[A-Za-z]+$", a) and tex[:1].isalpha() else ""
+            merged[-1] = (is_math, a + sep + tex)
+        else:
+            merged.append((is_math, tex))
+    out = []
+    for is_math, tex in merged:
+        if is_math:
+            out.append(r"\ensuremath{" + tex.strip() + "}" + (" " if tex.endswith(" ") else ""))
+        else:
+            out.append(tex)
+    return "".join(out)
+
+
+# --- the catalog's printed LaTeX, ready for a display ------------------------------------------
+_LEFT = re.compile(r"\\left(?![A-Za-z])")
+_RIGHT = re.compile(r"\\right(?![A-Za-z])")
+_ENV = re.compile(r"\\(begin|end)\{([A-Za-z*]+)\}")
+
+
+def _split_top(s: str, seps: tuple[str, ...], newline: bool) -> list[str]:
+    """Split ``s`` at ``seps`` (and newlines) that are outside braces and environments."""
+    parts, cur, depth, env, i = [], [], 0, 0, 0
+    while i < len(s):
+        m = _ENV.match(s, i)
+        if m:
+            env += 1 if m.group(1) == "begin" else -1
+            cur.append(m.group(0))
+            i = m.end()
+            continue
+        ch = s[i]
+        if ch == "\\" and i + 1 < len(s) and s[i + 1] in "{}\\&":
+            if s[i + 1] == "\\" and depth == 0 and env == 0 and "\\\\" in seps:
+                parts.append("".join(cur))
+                cur = []
+                i += 2
+                continue
+            cur.append(s[i:i + 2])
+            i += 2
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and env == 0 and ((ch == "\n" and newline) or ch in seps):
+            parts.append("".join(cur))
+            cur = []
+            i += 1
+            continue
+        cur.append(ch)
+        i += 1
+    parts.append("".join(cur))
+    return parts
+
+
+def balance(row: str) -> str:
+    """Close a ``\\left`` that the print closes on a later line (and open the ``\\right`` it
+    opened on an earlier one) with invisible delimiters, so the row typesets on its own."""
+    masked = _mask_nested(row)
+    lefts, rights = len(_LEFT.findall(masked)), len(_RIGHT.findall(masked))
+    # a \right before any \left at the same level needs an opening \left. in front
+    opening = 0
+    depth = 0
+    for m in re.finditer(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", masked):
+        if m.group(0) == r"\left":
+            depth += 1
+        else:
+            depth -= 1
+            if depth < 0:
+                opening += 1
+                depth = 0
+    closing = lefts + opening - rights
+    return (r"\left. " * opening) + row.strip() + (r" \right." * max(closing, 0))
+
+
+def _mask_nested(s: str) -> str:
+    """``s`` with everything inside braces and environments blanked out."""
+    out, depth, env, i = [], 0, 0, 0
+    while i < len(s):
+        m = _ENV.match(s, i)
+        if m:
+            env += 1 if m.group(1) == "begin" else -1
+            out.append(" " * len(m.group(0)))
+            i = m.end()
+            continue
+        ch = s[i]
+        if ch == "\\" and i + 1 < len(s) and s[i + 1] in "{}":
+            out.append(s[i:i + 2] if depth == 0 and env == 0 else "  ")
+            i += 2
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        out.append(ch if depth == 0 and env == 0 and ch not in "{}" else " ")
+        i += 1
+    return "".join(out)
+
+
+def display_rows(latex: str) -> list[str]:
+    """The rows of one display for a catalog entry's printed LaTeX.
+
+    The print separates displays by newlines and lines of one display by ``\\\\``; both become
+    rows.  Newlines and ``\\\\`` inside an environment (``aligned``) stay where they are.  Each
+    row's ``\\left``/``\\right`` pairs are balanced (see :func:`balance`); a row ending in a
+    bare operator after a ``\\\\`` keeps it.
+
+    >>> display_rows(r"a = \\left\\{ b + \\right. \\\\ \\left. + c \\right\\}")
+    ['a = \\\\left\\\\{ b + \\\\right.', '\\\\left. + c \\\\right\\\\}']
+    >>> display_rows("x = 1\\ny = 2")
+    ['x = 1', 'y = 2']
+    """
+    rows = []
+    for line in _split_top(latex, ("\\\\",), newline=True):
+        if line.strip():
+            rows.append(balance(_balance_environments(line.strip())))
+    return rows or [""]
+
+
+def _balance_environments(s: str) -> str:
+    """Balance \\left/\\right inside each cell of each environment in ``s`` (recursively)."""
+    out, i = [], 0
+    while True:
+        m = re.search(r"\\begin\{([A-Za-z*]+)\}", s[i:])
+        if not m:
+            out.append(s[i:])
+            return "".join(out)
+        start = i + m.start()
+        name = m.group(1)
+        # find the matching \end
+        depth, j = 0, start
+        for e in _ENV.finditer(s, start):
+            if e.group(2) == name:
+                depth += 1 if e.group(1) == "begin" else -1
+                if depth == 0:
+                    j = e.start()
+                    end = e.end()
+                    break
+        else:
+            out.append(s[i:])
+            return "".join(out)
+        body_start = start + len(m.group(0))
+        body = s[body_start:j]
+        rows = _split_top(body, ("\\\\",), newline=False)
+        new_rows = []
+        for row in rows:
+            cells = _split_top(row, ("&",), newline=False)
+            new_rows.append(" &".join(balance(_balance_environments(c)) if c.strip() else c.strip() for c in cells))
+        out.append(s[i:body_start] + " " + " \\\\\n".join(r for r in new_rows) + " " + s[j:end])
+        i = end
