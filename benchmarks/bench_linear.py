@@ -5,11 +5,11 @@ evaluation at the exact double inputs) across κ/Ω, and cost per point on array
 """
 
 import math
-import platform
-import time
 
 import mpmath
 import numpy as np
+
+from _timing import best_of, machine
 
 from quasicentral import motion
 
@@ -28,7 +28,7 @@ def ulp_error(kappa, n=400, t_end=12.0):
 
 
 def main():
-    print(f"# {platform.processor() or platform.machine()}, numpy {np.__version__}")
+    print(machine())
     print("kappa/Omega        max err x [ulp of R0]   max err y [ulp of v0/Omega]")
     for r in (0, 0.1, 0.5, 1 - 1e-6, 1 - 1e-12, 1.0, 1 + 1e-12, 1 + 1e-6, 2, 10, 1000):
         ex, ey = ulp_error(r * OMEGA)
@@ -36,14 +36,9 @@ def main():
     t = np.linspace(0, 20, 10**6)
     for r in (0.1, 1.0, 2.0):
         motion.linear(t, 0.1, 0.1, OMEGA, r * OMEGA)
-        best = min(_time(lambda: motion.linear(t, 0.1, 0.1, OMEGA, r * OMEGA)) for _ in range(5))
+        best = best_of(lambda: motion.linear(t, 0.1, 0.1, OMEGA, r * OMEGA), 5)
         print(f"cost, kappa/Omega = {r}: {best / t.size * 1e9:.1f} ns per point (10^6 points)")
 
-
-def _time(f):
-    t0 = time.perf_counter()
-    f()
-    return time.perf_counter() - t0
 
 
 if __name__ == "__main__":

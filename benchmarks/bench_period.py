@@ -5,10 +5,10 @@ cost per element on arrays of 10⁶, for each double-precision method; series te
 """
 
 import math
-import platform
-import time
 
 import numpy as np
+
+from _timing import best_of, machine
 
 from quasicentral import period as P
 
@@ -24,7 +24,7 @@ def ulps(method, phis=None, deltas=None):
 
 
 def main():
-    print(f"# {platform.processor() or platform.machine()}, numpy {np.__version__}")
+    print(machine())
     rng = np.random.default_rng(1)
     phis = np.concatenate([rng.uniform(1e-6, math.pi - 1e-6, 300), math.pi - np.logspace(-15, -1, 40)])
     deltas = np.logspace(-300, 0, 120)
@@ -34,7 +34,7 @@ def main():
     big = rng.uniform(1e-3, math.pi - 1e-3, 10**6)
     for method in ("agm", "ellipk", "series"):
         P.period_ratio(big, method=method)
-        best = min(_time(lambda: P.period_ratio(big, method=method)) for _ in range(5))
+        best = best_of(lambda: P.period_ratio(big, method=method), 5)
         print(f"cost {method:7s}: {best / big.size * 1e9:.1f} ns per element (10^6 amplitudes)")
     for deg in (10, 45, 90, 150, 170, 179):
         print(f"series (66): {P.terms_needed(math.radians(deg), 1e-15)} terms for 1e-15 at {deg} deg")
@@ -42,11 +42,6 @@ def main():
         a = math.degrees(P.first_amplitude_exceeding(n, 1e-3))
         print(f"series (66) with {n} terms first exceeds 1e-3 at {a:.2f} deg")
 
-
-def _time(f):
-    t0 = time.perf_counter()
-    f()
-    return time.perf_counter() - t0
 
 
 if __name__ == "__main__":

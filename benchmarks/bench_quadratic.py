@@ -6,11 +6,12 @@ first-order error against the full motion, fitted as C·β^p.
 """
 
 import math
-import platform
 import time
 
 import mpmath
 import numpy as np
+
+from _timing import best_of, machine
 
 from quasicentral import quadratic as Q
 
@@ -18,7 +19,7 @@ OMEGA, R0 = math.sqrt(10.0), 0.1
 
 
 def main():
-    print(f"# {platform.processor() or platform.machine()}, numpy {np.__version__}")
+    print(machine())
     t = np.linspace(0, 10 * math.pi / OMEGA, 101)
     worst = 0.0
     for k2 in (-2, -1, -1e-6, -1e-12, -1e-15, 0, 1e-15, 1e-12, 1e-6, 0.5, 0.9, 0.99, 0.999):
@@ -34,7 +35,7 @@ def main():
     print(f"worst: {worst:.2e} (target 1e-13)")
     big = np.linspace(0, 10 * math.pi / OMEGA, 10**6)
     Q.first_order(big, R0, 0.2, OMEGA, 0.5)
-    best = min(_time(lambda: Q.first_order(big, R0, 0.2, OMEGA, 0.5)) for _ in range(3))
+    best = best_of(lambda: Q.first_order(big, R0, 0.2, OMEGA, 0.5), 3)
     print(f"cost: {best / big.size * 1e9:.0f} ns per point (10^6 points; target 2000)")
     tt = np.linspace(0, 4 * math.pi / OMEGA, 400)
     betas = np.geomspace(0.01, 0.5, 8)
@@ -49,11 +50,6 @@ def main():
     Q.integrate_full(tt, R0, 0.2, OMEGA, 0.5, rtol=1e-12)
     print(f"full motion (DOP853, rtol 1e-12, 2 periods): {1e3 * (time.perf_counter() - t0):.1f} ms")
 
-
-def _time(f):
-    t0 = time.perf_counter()
-    f()
-    return time.perf_counter() - t0
 
 
 if __name__ == "__main__":
