@@ -21,9 +21,12 @@ printed ζ forms are then compared with these over four periods (ζ = cos Ωt, e
 
 Where the print keeps an integral in t or z, the derived side is the integral of the variation of
 constants itself (transformed by the same substitution), evaluated by quadrature on the same nodes.
-For the printed integrals in ζ, whose upper limit is ζ = cos Ωt, the domains below declare the
-upper limit of the printed integral (the limit tuple (ζ, 1, ζ) → (ζ, 1, cos Ωt)): the integration
-variable keeps its name, only the limit is tied to time.
+Where the print has ζ (its integrals run to ζ = cos Ωt, its closed forms take ζ = cos Ωt), the
+derived side is the same step taken in the amplitude, with its integrals in closed Legendre form
+(exact and cheap at every t); the domains tie the printed upper limit ζ to time by declaring the
+limit tuple (ζ, 1, ζ) → (ζ, 1, cos Ωt) — the integration variable keeps its name.  The closed
+forms are compared with direct quadrature and with a DOP853 integration of the linearized
+equations over five periods in tests/test_brepta1953_s5.py.
 """
 
 from __future__ import annotations
@@ -33,8 +36,8 @@ import sympy as sp
 from quasicentral.domain import Domain
 from quasicentral.registry import derived, derives
 from quasicentral.symbols import (
-    B as B_sym, C1, C2, C3, C4, D, D1, D2, D_, Omega, R0, A as A_sym, C as C_sym, R, S, alpha,
-    ax, ay, beta, g, k, l, m, psi, rho, s, t, th, u, v, v0, x, y, z, zeta,
+    A as A_sym, B as B_sym, C as C_sym, C1, C2, C3, C4, D, D1, D2, D_, Omega, R0, alpha, ax, ay,
+    g, k, l, m, psi, rho, s, t, th, u, v, v0, x, y, z, zeta,
 )
 
 # --- domains ---------------------------------------------------------------------------------
@@ -60,10 +63,6 @@ THETA = Omega * t  # the paper's φ = Ωt
 Z_OF_T = sp.pi / 2 - THETA  # the amplitude z = π/2 − Ωt
 R1 = sp.Symbol("R_1")  # the catalog's plain Symbol('R_1') of (33)
 Af, Bf, Cf, Df = (sp.Function(name) for name in "ABCD")  # the varied constants A(t), …, D(t)
-
-
-def _eq(lhs, rhs) -> sp.Eq:
-    return sp.Eq(lhs, rhs, evaluate=False)
 
 
 # --- Newton's law in the tangent plane -------------------------------------------------------
@@ -565,59 +564,73 @@ def split_by_powers(expr: sp.Expr, const) -> sp.Expr:
     return sp.expand(pre * total) + const
 
 
-def complete_in_zeta(integrand: sp.Expr, var=z) -> sp.Integral:
-    """∫_0^{π/2} h(z) dz in ζ = sin z: one-to-one on [0, π/2], where cos z = √(1 − ζ²) ≥ 0,
-    so dz = dζ/√(1 − ζ²); the integrand h is a function of sin z."""
-    h = integrand.subs(sp.sin(var), zeta)
-    assert var not in h.free_symbols, h
-    den = (1 - zeta**2) * (delta(var) ** 2).subs(sp.sin(var), zeta)  # cos² z Δ² in ζ
-    num = sp.cancel(h**2 / (1 - zeta**2) * den)  # h ≥ 0 on [0, π/2]: h dz = √num/√den dζ
-    assert num.is_polynomial(zeta), num
-    return sp.Integral(sp.sqrt(sp.factor(num)) / sp.sqrt(den), (zeta, 0, 1))
-
-
 def split_limits(expr: sp.Expr) -> sp.Expr:
-    """∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2}; the complete parts are written in ζ (complete_in_zeta)."""
+    """∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} for every amplitude integral (the complete parts are
+    the printed ∫_0^1 in ζ: on [0, π/2] the substitution ζ = sin z is one-to-one)."""
 
     def split(integral):
         (var, lo, hi), = integral.limits
-        return sp.Integral(integral.function, (var, 0, hi)) - complete_in_zeta(integral.function, var)
+        f = integral.function
+        return sp.Integral(f, (var, 0, hi)) - sp.Integral(f, (var, 0, sp.pi / 2))
 
     return expr.replace(lambda e: isinstance(e, sp.Integral) and e.limits[0][1] == sp.pi / 2, split)
+
+
+def closed(expr: sp.Expr) -> sp.Expr:
+    """The amplitude integrals of ``expr`` in Legendre form (evaluate_amplitude_integrals), u = R₀Ω."""
+    return evaluate_amplitude_integrals(expr).subs(u, R0 * Omega)
+
+
+# The printed steps in ζ, derived along the whole motion: each is the same step taken in the
+# amplitude z (where ζ = sin z, √(1 − ζ²) = cos z), its integrals given in closed Legendre form so
+# that they are exact and cheap at every t.  The print's ζ-integrals agree for 0 ≤ Ωt ≤ π only.
+def b_steps() -> dict[str, sp.Expr]:
+    """B along the motion after each printed step (amplitude integrals, not yet evaluated)."""
+    whole = amplitude_b()
+    split = split_by_powers(whole, C2).subs(u, R0 * Omega)
+    return {"zeta": whole, "split": split, "split-limits": split_limits(split)}
+
+
+def c_steps() -> dict[str, sp.Expr]:
+    """C along the motion after each printed step."""
+    whole = amplitude_c()
+    split = split_by_powers(whole, C3).subs(u, R0 * Omega)
+    return {"zeta": whole, "split": split, "split-limits": split_limits(split)}
 
 
 @derives("brepta1953:B-integral-zeta", uses=("brepta1953:B-integral-k", "brepta1953:substitution-zeta",
                                            "brepta1953:29"),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_integral_zeta():
-    """B = (βR₀u/Ω) ∫_{π/2}^{z} cos² z Δ dz + C₂ with z = π/2 − Ωt over the whole motion.  With
-    ζ = sin z this is ∫₁^ζ √((1−ζ²)(1−k²ζ²)) dζ only while cos z = √(1 − ζ²) ≥ 0 (0 ≤ Ωt ≤ π)."""
-    return sp.Eq(B_sym, amplitude_b())
+    """B = (βR₀u/Ω) ∫_{π/2}^{z} cos² z Δ dz + C₂ with z = π/2 − Ωt over the whole motion (in closed
+    form).  With ζ = sin z this is ∫₁^ζ √((1−ζ²)(1−k²ζ²)) dζ only while cos z = √(1 − ζ²) ≥ 0,
+    i.e. for 0 ≤ Ωt ≤ π."""
+    return sp.Eq(B_sym, closed(b_steps()["zeta"]))
 
 
 @derives("brepta1953:B-integral-denominator", uses=("brepta1953:B-integral-zeta",),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_integral_denominator():
-    """The same B with the root moved to the denominator: cos² z Δ = cos² z Δ²/Δ."""
+    """The same B: moving the root to the denominator, cos² z Δ = cos² z Δ²/Δ, changes nothing."""
     pre, integral = prefactor_and_integral(amplitude_b(), C2)
     (var, lo, hi), = integral.limits
     moved = sp.Mul(sp.cos(var) ** 2 * delta(var) ** 2, 1 / delta(var))  # evaluates back to cos²Δ
-    return sp.Eq(B_sym, pre * sp.Integral(moved, (var, lo, hi)) + C2)
+    return sp.Eq(B_sym, closed(pre * sp.Integral(moved, (var, lo, hi)) + C2))
 
 
 @derives("brepta1953:B-split", uses=("brepta1953:B-integral-denominator", "brepta1953:u-definition"),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_split():
     """B = βR₀² {∫ dz/Δ − (1+k²) ∫ sin² z dz/Δ + k² ∫ sin⁴ z dz/Δ} + C₂, from π/2 to π/2 − Ωt:
-    cos² z Δ² = 1 − (1+k²) sin² z + k² sin⁴ z."""
-    return sp.Eq(B_sym, split_by_powers(amplitude_b(), C2).subs(u, R0 * Omega))
+    cos² z Δ² = 1 − (1+k²) sin² z + k² sin⁴ z (each integral in closed form)."""
+    return sp.Eq(B_sym, closed(b_steps()["split"]))
 
 
 @derives("brepta1953:B-split-limits", uses=("brepta1953:B-split",),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_split_limits():
-    """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (the complete parts in ζ, ∫_0^1)."""
-    return sp.Eq(B_sym, split_limits(derived("brepta1953:B-split").rhs))
+    """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (each in closed form)."""
+    return sp.Eq(B_sym, closed(b_steps()["split-limits"]))
 
 
 @derives("brepta1953:integral-limits", mode="substitute", uses=("brepta1953:B-split",))
@@ -633,24 +646,24 @@ def integral_limits():
                                            "brepta1953:29"),
          unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def c_integral_zeta():
-    """C = (βv₀u/Ω²) ∫_{π/2}^{z} sin² z Δ dz + C₃ with z = π/2 − Ωt; in ζ = sin z this is
-    (βv₀R₀/Ω) ∫₁^ζ (ζ² − k²ζ⁴)/√((1−ζ²)(1−k²ζ²)) dζ only for 0 ≤ Ωt ≤ π."""
-    return sp.Eq(C_sym, amplitude_c())
+    """C = (βv₀u/Ω²) ∫_{π/2}^{z} sin² z Δ dz + C₃ with z = π/2 − Ωt (closed form); in ζ = sin z
+    this is (βv₀R₀/Ω) ∫₁^ζ (ζ² − k²ζ⁴)/√((1−ζ²)(1−k²ζ²)) dζ only for 0 ≤ Ωt ≤ π."""
+    return sp.Eq(C_sym, closed(c_steps()["zeta"]))
 
 
 @derives("brepta1953:C-split", uses=("brepta1953:C-integral-zeta", "brepta1953:u-definition"),
          unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def c_split():
     """C = (βv₀R₀/Ω) {∫ sin² z dz/Δ − k² ∫ sin⁴ z dz/Δ} + C₃ (from π/2 to π/2 − Ωt):
-    sin² z Δ² = sin² z − k² sin⁴ z."""
-    return sp.Eq(C_sym, split_by_powers(amplitude_c(), C3).subs(u, R0 * Omega))
+    sin² z Δ² = sin² z − k² sin⁴ z (each integral in closed form)."""
+    return sp.Eq(C_sym, closed(c_steps()["split"]))
 
 
 @derives("brepta1953:C-split-limits", uses=("brepta1953:C-split",),
          unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def c_split_limits():
-    """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (the complete parts in ζ, ∫_0^1)."""
-    return sp.Eq(C_sym, split_limits(derived("brepta1953:C-split").rhs))
+    """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (each in closed form)."""
+    return sp.Eq(C_sym, closed(c_steps()["split-limits"]))
 
 
 # --- the closed forms (Legendre, in the amplitude z = π/2 − Ωt) --------------------------------
@@ -679,12 +692,12 @@ def ec_definition():
     return {}
 
 
-@derives("brepta1953:B-reduced", uses=("brepta1953:B-split",), unknowns=(B_sym,), domain=ELLIPTIC_T)
+@derives("brepta1953:B-reduced", uses=("brepta1953:B-split-limits",), unknowns=(B_sym,), domain=ELLIPTIC_T)
 def b_reduced():
     """B-split with each ∫_{π/2}^{Z} sin^{2j} z dz/Δ reduced to Legendre's F(Z), E(Z), K, E and
     sin Z cos Z Δ(Z) (legendre_antiderivative), Z = π/2 − Ωt; the paper's ζ-form equals this for
     0 ≤ Ωt ≤ π only."""
-    return sp.Eq(B_sym, evaluate_amplitude_integrals(derived("brepta1953:B-split").rhs))
+    return sp.Eq(B_sym, closed(b_steps()["split-limits"]))
 
 
 @derives("brepta1953:B-final", uses=("brepta1953:B-integral-k",), unknowns=(B_sym,), domain=ELLIPTIC_T)
@@ -692,20 +705,20 @@ def b_final():
     """B = βR₀² {(k²−1)/(3k²) F(Z) + (1+k²)/(3k²) E(Z) + sin Z cos Z Δ(Z)/3 + (1−k²)/(3k²) K
     − (1+k²)/(3k²) E} + C₂, Z = π/2 − Ωt: the antiderivative of cos² z Δ found by matching
     coefficients (a proof by differentiation), taken from π/2 to Z."""
-    return sp.Eq(B_sym, evaluate_amplitude_integrals(amplitude_b()).subs(u, R0 * Omega))
+    return sp.Eq(B_sym, closed(amplitude_b()))
 
 
-@derives("brepta1953:C-reduced", uses=("brepta1953:C-split",), unknowns=(C_sym,), domain=ELLIPTIC_T)
+@derives("brepta1953:C-reduced", uses=("brepta1953:C-split-limits",), unknowns=(C_sym,), domain=ELLIPTIC_T)
 def c_reduced():
     """C-split with ∫_{π/2}^{Z} sin² z dz/Δ and ∫ sin⁴ z dz/Δ reduced to F, E, K, E."""
-    return sp.Eq(C_sym, evaluate_amplitude_integrals(derived("brepta1953:C-split").rhs))
+    return sp.Eq(C_sym, closed(c_steps()["split-limits"]))
 
 
 @derives("brepta1953:C-final", uses=("brepta1953:C-integral-z",), unknowns=(C_sym,), domain=ELLIPTIC_T)
 def c_final():
     """C = (βv₀R₀/Ω) {(1−k²)/(3k²) F(Z) + (2k²−1)/(3k²) E(Z) − sin Z cos Z Δ(Z)/3 − (1−k²)/(3k²) K
     − (2k²−1)/(3k²) E} + C₃, Z = π/2 − Ωt (antiderivative of sin² z Δ from π/2 to Z)."""
-    return sp.Eq(C_sym, evaluate_amplitude_integrals(amplitude_c()).subs(u, R0 * Omega))
+    return sp.Eq(C_sym, closed(amplitude_c()))
 
 
 def general_x() -> sp.Expr:

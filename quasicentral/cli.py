@@ -103,13 +103,19 @@ def build_parser() -> argparse.ArgumentParser:
     fg = sub.add_parser("figures", help="reproduce the texts' missing figures (CSV data and PNG plots)")
     fg.add_argument("--out", default="figures", metavar="DIR")
 
+    ch = sub.add_parser("charts", help="work–precision charts, stability maps, validity of the approximations")
+    ch.add_argument("--out", default="charts", metavar="DIR", help="output directory (default charts)")
+    ch.add_argument("--quick", action="store_true", help="a fast, coarse run (CI, tests)")
+    ch.add_argument("--only", action="append", metavar="NAME", help="only this chart (repeatable)")
+    ch.add_argument("--render-only", action="store_true", help="redraw the PNGs from the CSVs in DIR, measure nothing")
+
     rp = sub.add_parser("report", help="LaTeX reports (or handouts) regenerated from the verified derivations")
     rp.add_argument("--out", default="reports", metavar="DIR", help="output directory (default reports)")
     rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk")
     rp.add_argument("--lang", choices=("en", "cs"), default="en", help="language (default en)")
     rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
     rp.add_argument("--all", action="store_true",
-                    help="every golden document: the reports (en) and the handouts (en, cs)")
+                    help="every golden document: reports and handouts, English and Czech")
 
     sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
     sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
@@ -435,7 +441,7 @@ def _report(args) -> int:
     except OSError as exc:
         raise UsageError(f"cannot write to {args.out}: {exc.strerror or exc}") from None
     if args.all:
-        jobs = [(("report",), ("en",)), (("handout",), ("en", "cs"))]
+        jobs = list(report.GOLDEN)
     else:
         jobs = [(("handout",) if args.handout else ("report",), (args.lang,))]
     outcomes = report.outcomes_for_all()
@@ -459,7 +465,33 @@ def _report(args) -> int:
     return EXIT_OK
 
 
-_COMMANDS = {"scene": _scene, "report": _report, "figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
+def _charts(args) -> int:
+    from . import charts
+
+    out = Path(args.out)
+    if args.only:
+        for name in args.only:
+            if name not in charts.CHARTS:
+                raise UsageError(f"unknown chart {name!r}; choose from {', '.join(charts.CHARTS)}")
+    try:
+        if args.render_only:
+            if args.quick or args.only:
+                raise UsageError("--render-only redraws every CSV in DIR: leave out --quick and --only")
+            if not out.is_dir() or not any(out.glob("*.csv")):
+                raise UsageError(f"no chart data (CSV) in {args.out}")
+            paths = charts.render_all(out)
+        else:
+            paths = charts.build(out, quick=args.quick, only=args.only)
+    except OSError as exc:
+        raise UsageError(f"cannot write charts to {args.out}: {exc.strerror or exc}") from None
+    except charts.ChartError as exc:
+        raise UsageError(str(exc)) from None
+    for p in paths:
+        print(p)
+    return EXIT_OK
+
+
+_COMMANDS = {"charts": _charts, "scene": _scene, "report": _report, "figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
 
 
 def finite_float(text: str, name: str) -> float:

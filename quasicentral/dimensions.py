@@ -30,7 +30,12 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
         return DIMENSIONLESS
     if isinstance(e, sp.Symbol):
         raise DimensionError(f"no dimension declared for symbol {e}")
+    if isinstance(e, sp.Subs):  # f(t) at t = 0 has the dimension of f
+        return dimension(e.expr, dims, log_ok)
     if isinstance(e, sp.core.function.AppliedUndef):
+        for key, d in dims.items():  # x(0) is a value of x(t)
+            if isinstance(key, sp.core.function.AppliedUndef) and key.func == e.func:
+                return d
         raise DimensionError(f"no dimension declared for {e}")
     if isinstance(e, sp.Add):
         ds = [dimension(a, dims) for a in e.args]

@@ -28,6 +28,7 @@ Rendering is separate from derivation (sympy's ``LatexPrinter`` subclassed, as
 from __future__ import annotations
 
 import re
+import unicodedata
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -100,13 +101,33 @@ class PaperLatexPrinter(LatexPrinter):
             return f"{head}\\left({args}\\right)"
         return super()._print_Function(expr, exp)
 
-    def _print__Arccotg(self, expr, exp=None):
-        a = expr.args[0]
+    def _needs_function_brackets(self, expr) -> bool:
+        # cos φ, not cos(φ): a function of t prints as a single letter
+        if isinstance(expr, AppliedUndef) and expr.args == (S.t,):
+            return False
+        return super()._needs_function_brackets(expr)
+
+    def _foldable(self, a) -> bool:
+        """An argument that needs no brackets after an operator name: a symbol, a function of
+        t, or a fraction (the paper writes ln A, arccotg (v0/R0ω)·…)."""
+        if isinstance(a, AppliedUndef) and a.args == (S.t,):
+            return True
+        if isinstance(a, sp.Mul) and a.as_numer_denom()[1] != 1 and not a.could_extract_minus_sign():
+            return True
+        return a.is_Atom
+
+    def _operator(self, name: str, a, exp=None) -> str:
         arg = self._print(a)
-        if not (isinstance(a, AppliedUndef) and a.args == (S.t,)) and self._needs_function_brackets(a):
+        if not self._foldable(a):
             arg = rf"\left({arg}\right)"
-        head = r"\arccotg" if exp is None else rf"\arccotg^{{{exp}}}"
+        head = name if exp is None else rf"{name}^{{{exp}}}"
         return f"{head} {arg}"
+
+    def _print__Arccotg(self, expr, exp=None):
+        return self._operator(r"\arccotg", expr.args[0], exp)
+
+    def _print_log(self, expr, exp=None):
+        return self._operator(r"\ln", expr.args[0], exp)
 
     # derivatives
     def _is_time_derivative(self, expr) -> bool:
@@ -179,10 +200,85 @@ def paper_latex(expr, **settings) -> str:
     return PaperLatexPrinter(settings).doprint(expr)
 
 
-def relation_lines(rel, width: int = 150) -> list[str]:
-    """A derived relation (``Eq``, expression, or substitution pair) as one or more display
-    lines, broken before top-level + and − of the right side so that long results fit a page.
-    Lines are meant for ``aligned``: the first holds ``&=``, the rest start with ``&\\quad``."""
+_BREAK = "\x00"
+
+
+def visible_width(tex: str) -> int:
+    """A rough count of the glyphs ``tex`` typesets on one line (commands count as one)."""
+    tex = re.sub(r"\\(left|right)(?![A-Za-z])\\?", "", tex)
+    tex = re.sub(r"\\frac\{", "{", tex)
+    tex = re.sub(r"\\[A-Za-z]+", "x", tex)
+    return len(re.sub(r"[{}\s^_]", "", tex))
+
+
+class _BreakingPrinter(PaperLatexPrinter):
+    """Marks the places where a long sum may be broken: before the + and − of a top-level sum
+    and of a sum that is a factor of a top-level product (printed as coefficient × (sum))."""
+
+    def __init__(self, width: int):
+        super().__init__()
+        self._width = width
+
+    def _long(self, expr) -> bool:
+        return visible_width(self._print(expr)) > self._width
+
+    def breakable(self, expr) -> str:
+        if isinstance(expr, sp.Add) and self._long(expr):
+            return self._add_broken(expr)
+        if isinstance(expr, sp.Mul) and self._long(expr):
+            return self._mul_broken(expr)
+        return self._print(expr)
+
+    def _add_broken(self, expr) -> str:
+        tex = ""
+        for i, term in enumerate(self._as_ordered_terms(expr)):
+            if i > 0:
+                if term.could_extract_minus_sign():
+                    tex += _BREAK + " - "
+                    term = -term
+                else:
+                    tex += _BREAK + " + "
+            piece = self.breakable(term)
+            if self._needs_add_brackets(term):
+                piece = rf"\left({piece}\right)"
+            tex += piece
+        return tex
+
+    def _mul_broken(self, expr) -> str:
+        sums = [f for f in expr.args if isinstance(f, sp.Add)]
+        if not sums:
+            return self._print(expr)
+        big = max(sums, key=lambda a: (visible_width(self._print(a)), sp.default_sort_key(a)))
+        rest = sp.Mul(*[f for f in expr.args if f is not big])
+        if rest == 1:
+            head = ""
+        elif rest == -1:
+            head = "- "
+        elif rest.could_extract_minus_sign():
+            head = "- " + self._print(-rest) + " "
+        else:
+            head = self._print(rest) + " "
+        return head + r"\left(" + self._add_broken(big) + r"\right)"
+
+
+def broken_lines(expr, width: int = 90) -> list[str]:
+    """``expr`` in the paper's notation, broken into lines of about ``width`` glyphs; each line
+    has its ``\\left``/``\\right`` pairs closed so that it typesets on its own."""
+    tex = _BreakingPrinter(width).breakable(expr)
+    lines, cur = [], ""
+    for seg in tex.split(_BREAK):
+        if cur and visible_width(cur) + visible_width(seg) > width:
+            lines.append(cur)
+            cur = seg
+        else:
+            cur += seg
+    lines.append(cur)
+    return [balance(line) for line in lines]
+
+
+def relation_lines(rel, width: int = 90) -> list[str]:
+    """A derived relation (``Eq``, expression, or a (symbol, value) pair of a model) as the rows
+    of an ``aligned`` display: ``lhs &= …`` then ``&\\quad …``, broken where a long sum allows."""
     if isinstance(rel, tuple):
         lhs, rhs, rel_sym = rel[0], rel[1], r"\mapsto"
     elif isinstance(rel, sp.Eq):
@@ -190,25 +286,7 @@ def relation_lines(rel, width: int = 150) -> list[str]:
     else:
         lhs, rhs, rel_sym = None, rel, ""
     left = paper_latex(lhs) if lhs is not None else ""
-    whole = paper_latex(rhs)
-    if len(whole) + len(left) <= width or not isinstance(rhs, sp.Add):
-        return [f"{left} &{rel_sym} {whole}".strip()]
-    printer = PaperLatexPrinter()
-    terms = printer._as_ordered_terms(rhs)
-    lines, cur = [], ""
-    for i, term in enumerate(terms):
-        if i == 0:
-            piece = printer._print(term)
-        elif term.could_extract_minus_sign():
-            piece = " - " + printer._print(-term)
-        else:
-            piece = " + " + printer._print(term)
-        if cur and len(cur) + len(piece) > width:
-            lines.append(cur)
-            cur = piece
-        else:
-            cur += piece
-    lines.append(cur)
+    lines = broken_lines(rhs, width)
     out = [f"{left} &{rel_sym} {lines[0]}".strip()]
     out += [rf"&\quad {line}" for line in lines[1:]]
     return out
@@ -262,33 +340,82 @@ def _scan_braced(s: str, i: int) -> tuple[str, int]:
     return s[i + 1:], len(s)
 
 
+def _script(ch: str) -> tuple[str, str] | None:
+    """('^', 't') for a superscript character such as ᵗ or ², ('_', '0') for ₀; else None."""
+    if ch in SUPERSCRIPTS:
+        return "^", SUPERSCRIPTS[ch]
+    if ch in SUBSCRIPTS:
+        return "_", SUBSCRIPTS[ch]
+    d = unicodedata.decomposition(ch)
+    if d.startswith(("<super> ", "<sub> ")):
+        base = chr(int(d.split()[1], 16))
+        tex = base if base.isascii() and base.isalnum() else MATH_CHARS.get(base)
+        if tex:
+            return ("^" if d.startswith("<super>") else "_"), tex
+    return None
+
+
+def _other(ch: str, math: bool) -> str:
+    """Any other character: T1 has the Latin letters with diacritics (Czech among them);
+    the rest is decomposed to ASCII where it can be, else named by its code point."""
+    if ch.isascii():
+        if math and (ch.isalnum() or ch in "+-=()[]/.,;:!?' *<>|"):
+            return ch
+        return TEXT_CHARS.get(ch, ch) if not math else (r"\text{" + TEXT_CHARS.get(ch, ch) + "}")
+    if "\u00c0" <= ch <= "\u017f" and ch.isalpha() and ch not in "×÷":
+        return ch if not math else r"\text{" + ch + "}"
+    ascii_ = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
+    if ascii_.strip():
+        return _other(ascii_, math) if len(ascii_) == 1 else escape(ascii_)
+    return r"\text{[U+%04X]}" % ord(ch) if math else "[U+%04X]" % ord(ch)
+
+
 def _math(s: str) -> str:
     """A short run of prose mathematics (inside ^{...} or _{...}) in math mode."""
-    out = []
+    out: list[str] = []
     for ch in s:
+        sc = _script(ch)
         if ch in MATH_CHARS:
             out.append(MATH_CHARS[ch] + (" " if MATH_CHARS[ch][-1].isalpha() else ""))
-        elif ch in SUPERSCRIPTS:
-            out.append("^{" + SUPERSCRIPTS[ch] + "}")
-        elif ch in SUBSCRIPTS:
-            out.append("_{" + SUBSCRIPTS[ch] + "}")
+        elif sc:
+            out.append(f"{sc[0]}{{{sc[1]}}}")
         elif ch in COMBINING and out:
             out[-1] = f"{COMBINING[ch]}{{{out[-1].strip()}}}"
         elif ch in "{}":
             out.append("\\" + ch)
-        elif ch.isalnum() or ch in "+-=()[]/.,;:!?' *<>|":
-            out.append(ch)
         else:
-            out.append(TEXT_CHARS.get(ch, ch) if ch.isascii() else r"\text{" + ch + "}")
+            out.append(_other(ch, math=True))
     return "".join(out).strip()
 
 
-def text(s: str) -> str:
+def _single_base(s: str, i: int) -> bool:
+    """Is the character before s[i] a one-letter variable (x, ρ, C, a digit after one)?
+    Then '_' or '^' at s[i] is a sub/superscript; after a longer word it is literal."""
+    j = i
+    while j > 0 and (s[j - 1] in COMBINING):
+        j -= 1
+    if j == 0:
+        return False
+    prev = s[j - 1]
+    if prev in MATH_CHARS:
+        return True
+    if not (prev.isascii() and prev.isalnum()):
+        return prev in ")]}"
+    k = j - 1
+    while k > 0 and s[k - 1].isascii() and s[k - 1].isalnum():
+        k -= 1
+    return j - k == 1
+
+
+def text(s: str, letters: bool = True) -> str:
     """Prose with Unicode mathematics as LaTeX for pdfLaTeX (T1 fonts, UTF-8 input).
 
-    Greek letters, operators, super- and subscript digits and combining dots become math
-    (``\\ensuremath``); ``a_b``/``a^{b}`` become sub- and superscripts; every character special
-    to TeX is escaped.  Letters with diacritics that T1 has (Czech) pass through.
+    Greek letters, operators, super- and subscript characters and combining dots become math
+    (``\\ensuremath``); ``a_b`` and ``a^{b}`` after a one-letter variable become sub- and
+    superscripts (after a word such as ``test_x`` the underscore is literal); every character
+    special to TeX is escaped.  Letters with diacritics that T1 has (Czech) pass through.
+    With ``letters`` (English prose), a lone letter such as the R of "R = 2κmv" is a variable
+    and set in math italics too (not "a", "I", nor the d of "d/dt").
     """
     tokens: list[tuple[bool, str]] = []  # (is_math, latex)
 
@@ -298,6 +425,7 @@ def text(s: str) -> str:
     i, n = 0, len(s)
     while i < n:
         ch = s[i]
+        sc = _script(ch)
         if ch in COMBINING:
             # a dot over the previous character: make it math and decorate it
             if tokens:
@@ -307,7 +435,7 @@ def text(s: str) -> str:
                 if rest:
                     push(False, rest)
                 # decorate the last atom of a math run
-                m = re.search(r"(\\[A-Za-z]+|\\[a-z]+\{[^{}]*\}|[A-Za-z0-9])$", base)
+                m = re.search(r"(\\[A-Za-z]+|\\[a-z]+\{[^{}]*\}|[A-Za-z0-9]) ?$", base)
                 if m:
                     push(True, base[:m.start()] + f"{COMBINING[ch]}{{{m.group(1)}}}")
                 else:
@@ -315,16 +443,17 @@ def text(s: str) -> str:
             i += 1
         elif ch in MATH_CHARS:
             tex = MATH_CHARS[ch]
-            push(True, tex + (" " if tex[-1].isalpha() and i + 1 < n and (s[i + 1].isalnum()) else ""))
+            push(True, tex + (" " if tex[-1].isalpha() and i + 1 < n and s[i + 1].isalnum() else ""))
             i += 1
-        elif ch in SUPERSCRIPTS or ch in SUBSCRIPTS:
-            table, mark = (SUPERSCRIPTS, "^") if ch in SUPERSCRIPTS else (SUBSCRIPTS, "_")
-            j = i
-            while j < n and s[j] in table:
+        elif sc:
+            j, parts = i, []
+            while j < n and (_script(s[j]) or (None,))[0] == sc[0]:
+                parts.append(_script(s[j])[1])
                 j += 1
-            push(True, mark + "{" + "".join(table[c] for c in s[i:j]) + "}")
+            push(True, sc[0] + "{" + "".join(parts) + "}")
             i = j
-        elif ch in "^_" and i + 1 < n and (s[i + 1] == "{" or s[i + 1].isalnum() or s[i + 1] in MATH_CHARS):
+        elif (ch in "^_" and i + 1 < n and _single_base(s, i)
+              and (s[i + 1] == "{" or s[i + 1].isalnum() or s[i + 1] in MATH_CHARS)):
             if s[i + 1] == "{":
                 inner, j = _scan_braced(s, i + 1)
             else:
@@ -335,19 +464,13 @@ def text(s: str) -> str:
                 inner = s[i + 1:j]
             push(True, ch + "{" + _math(inner) + "}")
             i = j
-        elif ch == "*" and s[i:i + 2] == "**":
-            push(False, "**")
-            i += 2
-        elif ch in TEXT_CHARS:
-            push(False, TEXT_CHARS[ch])
-            i += 1
         elif ch == "\n":
             push(False, " ")
             i += 1
         else:
-            push(False, ch)
+            push(False, _other(ch, math=False))
             i += 1
-    return _join(tokens)
+    return _join(tokens, letters)
 
 
 def escape(s: str) -> str:
@@ -359,7 +482,7 @@ def escape(s: str) -> str:
     return "".join(TEXT_CHARS.get(ch, ch) if ch.isascii() else text(ch) for ch in s)
 
 
-def with_math(s: str) -> str:
+def with_math(s: str, letters: bool = True) -> str:
     r"""Prose that may hold inline mathematics between ``$`` signs (catalog notes and titles):
     the mathematics is kept as written, the rest goes through :func:`text`.  An odd number of
     ``$`` means they are not delimiters: everything is prose then.
@@ -368,12 +491,32 @@ def with_math(s: str) -> str:
     silou $R = 2\kappa mv$ a \ensuremath{\kappa}
     """
     parts = s.split("$")
-    if len(parts) % 2 == 0:
-        return text(s)
-    return "".join(text(p) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
+    if len(parts) % 2 == 0 or any(not p.strip() for p in parts[1::2]):
+        return text(s, letters)
+    return "".join(text(p, letters) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
 
 
-def _join(tokens: list[tuple[bool, str]]) -> str:
+_NEIGHBOURS = set(" =+-,;:()[]/*<>0123456789")
+
+
+def _lone_variable(tokens: list[tuple[bool, str]], k: int) -> bool:
+    """Is text token k a letter standing alone between spaces, operators or brackets?"""
+    tex = tokens[k][1]
+    if tex in ("a", "I", "d"):
+        return False
+    prev = tokens[k - 1] if k > 0 else (False, " ")
+    nxt = tokens[k + 1] if k + 1 < len(tokens) else (False, " ")
+    after = tokens[k + 2] if k + 2 < len(tokens) else (False, " ")
+    then = tokens[k + 3] if k + 3 < len(tokens) else (False, "")
+    prev_ok = prev[0] or prev[1] in _NEIGHBOURS
+    # before a full stop only at the end of a sentence ("law of S."), not in "t. j." or "e.g."
+    end_of_sentence = nxt[1] in ".?!" and (k + 2 >= len(tokens) or (
+        after[1] in (" ", "\n") and (then[0] or not then[1][:1].isalpha() or then[1][:1].isupper())))
+    next_ok = nxt[0] or nxt[1] in _NEIGHBOURS or end_of_sentence
+    return prev_ok and next_ok
+
+
+def _join(tokens: list[tuple[bool, str]], letters: bool = True) -> str:
     """Merge runs of math tokens (and single letters glued to them) into one \\ensuremath."""
     # a lone ASCII letter touching math (ρψ̇, a_ρ, e^{...}) reads as a variable: make it math
     merged: list[tuple[bool, str]] = []
@@ -384,6 +527,8 @@ def _join(tokens: list[tuple[bool, str]]) -> str:
             prev_letter = k > 0 and not tokens[k - 1][0] and tokens[k - 1][1][-1:].isalpha()
             next_letter = k + 1 < len(tokens) and not tokens[k + 1][0] and tokens[k + 1][1][:1].isalpha()
             if (prev_math or next_math) and not prev_letter and not next_letter:
+                is_math = True
+            elif letters and _lone_variable(tokens, k):
                 is_math = True
         if merged and merged[-1][0] == is_math:
             a = merged[-1][1]
@@ -536,3 +681,59 @@ def _balance_environments(s: str) -> str:
             new_rows.append(" &".join(balance(_balance_environments(c)) if c.strip() else c.strip() for c in cells))
         out.append(s[i:body_start] + " " + " \\\\\n".join(r for r in new_rows) + " " + s[j:end])
         i = end
+
+
+def _break_points(row: str) -> list[int]:
+    """Indices in ``row`` before which a line may break: a binary + or − or a ``\\quad`` at
+    brace depth 0, outside environments."""
+    out, depth, env, i = [], 0, 0, 0
+    while i < len(row):
+        m = _ENV.match(row, i)
+        if m:
+            env += 1 if m.group(1) == "begin" else -1
+            i = m.end()
+            continue
+        ch = row[i]
+        if ch == "\\":
+            if row.startswith(r"\quad", i) and depth == 0 and env == 0 and i > 0:
+                out.append(i)
+            j = i + 1
+            while j < len(row) and row[j].isalpha():
+                j += 1
+            i = max(j, i + 2) if j == i + 1 else j
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif ch in "+-" and depth == 0 and env == 0:
+            before = row[:i].rstrip()
+            binary = bool(before) and (before[-1].isalnum() or before[-1] in "})]|!'") \
+                and not re.search(r"\\left\s*\S?$|\\(cdot|quad|qquad|,|;)$", before)
+            if binary or (before.endswith(r"\right.")):
+                out.append(i)
+        i += 1
+    return out
+
+
+def wrap_row(row: str, width: int = 100) -> str:
+    """A printed row wider than ``width`` glyphs, broken before top-level + and − into an
+    ``aligned`` block (continuation lines indented); each line keeps its \\left/\\right pairs
+    closed.  Rows that fit, or that hold an environment, are returned as they are."""
+    if visible_width(row) <= width or r"\begin" in row:
+        return row
+    cuts = [0] + _break_points(row) + [len(row)]
+    pieces = [row[a:b] for a, b in zip(cuts, cuts[1:]) if row[a:b].strip()]
+    lines, cur = [], ""
+    for piece in pieces:
+        if cur and visible_width(cur) + visible_width(piece) > width:
+            lines.append(cur)
+            cur = piece
+        else:
+            cur += piece
+    lines.append(cur)
+    if len(lines) == 1:
+        return row
+    lines = [balance(line) for line in lines]
+    return ("\\begin{aligned}\n&" + lines[0] + "".join(" \\\\\n&\\qquad " + line for line in lines[1:])
+            + "\n\\end{aligned}")

@@ -169,9 +169,9 @@ WORDS = {
     "en": {
         "and": "and",
         "start": "We start from",
-        "states": "The text continues with",
-        "from_one": "From {refs} we obtain",
-        "from_many": "Combining {refs} we obtain",
+        "states": ("The text continues with", "Next comes", "Further,"),
+        "from_one": ("From {refs} we obtain", "From {refs} it follows that", "Then {refs} gives"),
+        "from_many": ("Combining {refs} we obtain", "From {refs} together we get"),
         "erratum": (r"The text prints this equation with an error ({kind}); the corrected form is "
                     r"shown above.  As printed:"),
         "cleared": r"This step looks suspicious, but the check confirms it.",
@@ -182,7 +182,7 @@ WORDS = {
         "ex_derive": "Starting from {refs}, derive equation {ref}:",
         "ex_derive_one": "Starting from {refs}, derive equation {ref}:",
         "ex_derive_none": "Derive equation {ref}:",
-        "ex_errata": "The text prints the following equation.  Find the error and correct it.",
+        "ex_errata": "The text prints equation {ref} as follows.  Find the error and correct it.",
         "sol_step": "The step, as the derivation states it:",
         "sol_result": "The result sympy obtains:",
         "sol_corrected": "The correct form is",
@@ -191,7 +191,7 @@ WORDS = {
         "exercise": "Exercise",
         "figures_intro": (r"The figures of the text were lost in print; these are reproduced from the "
                           r"closed forms with the parameters its captions give."),
-        "verified_by": (r"All equations of this handout were checked by \texttt{quasicentral}; the "
+        "verified_by": (r"All equations of this handout were checked by \texttt{{quasicentral}}; the "
                         r"report \texttt{{{report}.tex}} gives every verdict and its evidence."),
         # report labels
         "summary": "Summary",
@@ -243,9 +243,9 @@ WORDS = {
     "cs": {
         "and": "a",
         "start": "Vyjdeme ze vztahu",
-        "states": "Dále platí",
-        "from_one": "Z~rovnice {refs} dostaneme",
-        "from_many": "Z~rovnic {refs} dostaneme",
+        "states": ("Dále platí", "Text pokračuje vztahem", "Dále máme"),
+        "from_one": ("Z~rovnice {refs} dostaneme", "Z~rovnice {refs} plyne", "Odtud podle {refs} vychází"),
+        "from_many": ("Z~rovnic {refs} dostaneme", "Spojením rovnic {refs} dostaneme"),
         "erratum": (r"V~tisku je v~této rovnici chyba ({kind}); výše uvádíme opravený tvar.  "
                     r"Vytištěno bylo:"),
         "cleared": r"Tento krok vypadá podezřele, ověření však potvrdilo, že je správný.",
@@ -256,7 +256,7 @@ WORDS = {
         "ex_derive": "Z~rovnic {refs} odvoďte vztah {ref}:",
         "ex_derive_one": "Z~rovnice {refs} odvoďte vztah {ref}:",
         "ex_derive_none": "Odvoďte vztah {ref}:",
-        "ex_errata": "V~textu je vytištěna následující rovnice.  Najděte chybu a~opravte ji.",
+        "ex_errata": "Rovnice {ref} je v~textu vytištěna takto.  Najděte chybu a~opravte ji.",
         "sol_step": "Postup, jak jej popisuje odvození v~programu (anglicky):",
         "sol_result": "Výsledek, který dává sympy:",
         "sol_corrected": "Správný tvar je",
@@ -265,7 +265,7 @@ WORDS = {
         "exercise": "Cvičení",
         "figures_intro": (r"Obrázky se v~tisku nedochovaly; zde jsou znovu sestrojeny z~odvozených "
                           r"vztahů s~parametry, které uvádějí jejich popisky."),
-        "verified_by": (r"Všechny vztahy tohoto textu ověřil program \texttt{quasicentral}; zpráva "
+        "verified_by": (r"Všechny vztahy tohoto textu ověřil program \texttt{{quasicentral}}; zpráva "
                         r"\texttt{{{report}.tex}} uvádí každý verdikt i~jeho doklad."),
         "summary": "Přehled",
         "entries": "vztahů",

@@ -34,7 +34,7 @@ from pathlib import Path
 import sympy as sp
 
 from . import catalog, errata as errata_mod, figures as figures_mod, output
-from .latex import display_rows, escape, paper_latex, relation_lines, text, with_math
+from .latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
 from .prose import FIGURE_CAPTIONS_CS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
 from .registry import REGISTRY, Derivation, as_list, derived, load_all
 from .verdict import Outcome, Verdict
@@ -45,6 +45,8 @@ VERSIONS_FILE = "versions.tex"
 #: The packages whose versions a report states (distribution name, import name).
 PACKAGES = (("sympy", "sympy"), ("mpmath", "mpmath"), ("numpy", "numpy"), ("scipy", "scipy"),
             ("python-flint", "flint"), ("matplotlib", "matplotlib"))
+#: The golden documents (kinds × languages) that ``quasicentral report --all`` writes.
+GOLDEN = ((("report",), LANGS), (("handout",), LANGS))
 #: The command that regenerates every golden file under reports/.
 REGENERATE = "quasicentral report --all --out reports"
 
@@ -133,7 +135,7 @@ def section_title(source: str, section: str, lang: str) -> str:
     if known:
         return known[lang][0]
     printed = section_titles().get((source, section), "")
-    return with_math(printed) if printed else escape(section)
+    return with_math(printed, letters=False) if printed else escape(section)
 
 
 # --- figures ---------------------------------------------------------------------------------
@@ -216,6 +218,7 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \newcommand{\entrylabel}[2]{\phantomsection\def\@currentlabel{#2}\label{#1}}
 \makeatother
 \allowdisplaybreaks
+\emergencystretch=3em
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6ex plus 0.3ex}
 \hypersetup{pdftitle={%(pdftitle)s}}
@@ -223,7 +226,7 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 
 
 def preamble(lang: str, pdftitle: str) -> str:
-    return PREAMBLE % {"babel": "czech" if lang == "cs" else "english", "pdftitle": pdftitle}
+    return PREAMBLE % {"babel": "czech" if lang == "cs" else "english", "pdftitle": pdftitle.replace("~", " ")}
 
 
 def gathered(rows: list[str]) -> str:
@@ -239,13 +242,18 @@ def display(body: str, width: str = r"\linewidth") -> str:
     return f"\\begin{{center}}\n\\fit[{width}]{{$\\displaystyle\n{body}\n$}}\n\\end{{center}}\n"
 
 
+def printed_rows(latex: str, width: int = 100) -> list[str]:
+    """The rows of a printed display, rows wider than ``width`` glyphs broken (see wrap_row)."""
+    return [wrap_row(r, width) for r in display_rows(latex)]
+
+
 def printed_display(latex: str) -> str:
-    return display(gathered(display_rows(latex)))
+    return display(gathered(printed_rows(latex)))
 
 
 def tagged_display(latex: str, tag: str, label: str) -> str:
     """A numbered display (handout): the printed rows, the paper's tag, a label."""
-    return ("\\begin{equation}\n\\fit[0.86\\linewidth]{$\\displaystyle\n" + gathered(display_rows(latex))
+    return ("\\begin{equation}\n\\fit[0.86\\linewidth]{$\\displaystyle\n" + gathered(printed_rows(latex, 90))
             + f"\n$}}\n{tag}\\label{{{label}}}\n\\end{{equation}}\n")
 
 
@@ -281,13 +289,12 @@ def _digits(digits: tuple[int, ...], lang: str) -> str:
 
 def verdict_sentence(v: Verdict, lang: str) -> str:
     W = WORDS[lang]
-    s = f"{W['verdicts'][v.name]}, {W['methods'][v.method.value]}"
+    s = W["verdicts"][v.name] + ("" if v.method.value == "none" else " " + W["methods"][v.method.value])
     if v.points and v.digits:
-        s += "; " + W["points"].format(n=v.points, digits=_digits(v.digits, lang))
-    s += "."
+        s += " (" + W["points"].format(n=v.points, digits=_digits(v.digits, lang)) + ")"
     if v.detail:
-        s += " " + text(v.detail[0].upper() + v.detail[1:]) + ("" if v.detail.endswith(".") else ".")
-    return s
+        s += ": " + text(v.detail)
+    return s + ("" if s.endswith(".") else ".")
 
 
 def witness_text(w, lang: str) -> str:
@@ -305,9 +312,9 @@ def witness_text(w, lang: str) -> str:
         out.append(f"{W['at']} {pts}")
     q = get("quantity")
     if q:
-        out.append(f"{W['quantity']} \\texttt{{{escape(q)}}}")
-    out.append(f"{W['printed_value']} \\texttt{{{escape(str(get('printed')))}}}, "
-               f"{W['derived_value']} \\texttt{{{escape(str(get('corrected')))}}}"
+        out.append(f"{W['quantity']} {text(q)}")
+    out.append(f"{W['printed_value']} {code(str(get('printed')))}, "
+               f"{W['derived_value']} {code(str(get('corrected')))}"
                + (f" ({get('digits')} digits)" if get("digits") else ""))
     out.append(W["certified_yes"] if get("certified") else W["certified_no"])
     return "; ".join(out)
@@ -329,11 +336,19 @@ def ref_of(step_by_id: dict[str, Step], eid: str, handout: bool) -> str:
     document is written out."""
     st = step_by_id.get(eid)
     if st is None:
-        return r"\texttt{" + escape(eid) + "}"
+        return code(eid)
     if handout:
         prefix = "h:"
         return f"\\eqref{{{prefix}{st.label}}}" if st.entry.number else f"\\ref{{{prefix}{st.label}}}"
     return f"\\ref{{e:{st.label}}}"
+
+
+_URL_SAFE = re.compile(r"[A-Za-z0-9_.:/=+*()\[\], -]*")
+
+
+def code(s: str) -> str:
+    """Monospaced text that may break at '.', '_', '-' …: identifiers, module paths, numbers."""
+    return f"\\nolinkurl{{{s}}}" if _URL_SAFE.fullmatch(s) else f"\\texttt{{{escape(s)}}}"
 
 
 def _number_or_name(e: catalog.Entry) -> str:
@@ -386,7 +401,7 @@ def _report_entry(st: Step, by_id: dict[str, Step], lang: str) -> str:
     W, e, o = WORDS[lang], st.entry, st.outcome
     head = (f"({escape(e.number)})~" if e.number else "") + text(e.name)
     out = [f"\\subsection*{{{head}}}\n\\entrylabel{{e:{st.label}}}{{{_number_or_name(e)}}}%\n",
-           f"\\texttt{{{escape(e.id)}}} --- \\textbf{{{W['status'][o.status]}}}\n\n",
+           f"{code(e.id)} --- \\textbf{{{W['status'][o.status]}}}\n\n",
            f"\\textbf{{{W['printed']}.}}\n" + printed_display(e.latex)]
     # as re-derived
     out.append(f"\\textbf{{{W['derived']}.}}")
@@ -424,8 +439,8 @@ def _report_entry(st: Step, by_id: dict[str, Step], lang: str) -> str:
         uses = [ref_of(by_id, u, handout=False) for u in d.uses]
         out.append(f"\\textbf{{{W['step']}.}} " + paragraphs(d.doc) + "\n\n")
         out.append(f"\\textbf{{{W['uses']}:}} " + (", ".join(uses) if uses else W["nothing"]) + ". "
-                   + f"\\textbf{{{W['code']}:}} \\texttt{{{escape(d.module)}.{escape(d.func.__name__)}}} "
-                   + f"(\\texttt{{mode={escape(d.mode)}}}).\n\n")
+                   + f"\\textbf{{{W['code']}:}} {code(d.module + '.' + d.func.__name__)} "
+                   + f"({code('mode=' + d.mode)}).\n\n")
     if e.note:
         out.append(f"\\textbf{{{W['note']}.}} " + with_math(e.note) + "\n\n")
     return "".join(out)
@@ -440,22 +455,24 @@ def _errata_section(source: str, steps: list[Step], lang: str) -> str:
     if not doc["errata"]:
         out.append(W["none_found"] + "\n\n")
     else:
-        out.append("\\begin{longtable}{@{}p{0.09\\linewidth}p{0.3\\linewidth}p{0.3\\linewidth}"
-                   "p{0.23\\linewidth}@{}}\n\\toprule\n"
-                   f"{W['table_eq']} & {W['table_printed']} & {W['table_corrected']} & "
-                   f"{W['table_kind']}, {W['table_witness']} \\\\\n\\midrule\n\\endhead\n")
-        for r in doc["errata"]:
+        out.append("\\begin{longtable}{@{}p{0.2\\linewidth}p{0.76\\linewidth}@{}}\n\\toprule\n"
+                   f"{W['table_eq']} & {W['table_printed']} / {W['table_corrected']} / {W['table_witness']} "
+                   "\\\\\n\\midrule\n\\endhead\n")
+        for n, r in enumerate(doc["errata"]):
             w = r["witness"] or {}
             kind = KINDS_CS.get(r["kind"], r["kind"]) if lang == "cs" else r["kind"]
             cert = W["certified_yes"] if w.get("certified") else W["certified_no"]
-            out.append(f"\\ref{{e:{label[r['id']]}}} & "
-                       f"\\fit{{$\\displaystyle {gathered(display_rows(r['printed_latex']))}$}} & "
-                       f"\\fit{{$\\displaystyle {gathered(display_rows(r['corrected_latex']))}$}} & "
-                       f"{escape(kind)}; {cert}; {W['status'][r['status']]} \\\\\n")
+            cell = lambda latex: "\\fit{$\\displaystyle " + gathered(printed_rows(latex, 70)) + "$}"  # noqa: E731
+            out.append(("\\midrule\n" if n else "")
+                       + f"\\ref{{e:{label[r['id']]}}} & \\textbf{{{W['table_printed']}:}}\\newline "
+                       + cell(r["printed_latex"]) + " \\\\\n"
+                       + f"{escape(kind)} & \\textbf{{{W['table_corrected']}:}}\\newline "
+                       + cell(r["corrected_latex"]) + " \\\\\n"
+                       + f"{cert}; {W['status'][r['status']]} & \\textbf{{{W['table_witness']}:}} "
+                       + witness_text(r["witness"], lang) + " \\\\\n")
         out.append("\\bottomrule\n\\end{longtable}\n\n")
         for r in doc["errata"]:
             out.append(f"\\subsection*{{\\ref{{e:{label[r['id']]}}}~{text(r['name'])}}}\n")
-            out.append(f"\\textbf{{{W['witness']}:}} " + witness_text(r["witness"], lang) + ".\n\n")
             out.append(f"\\textbf{{{W['evidence']}:}} " + text(r["evidence"] or "") + "\n\n")
             out.append(f"\\textbf{{{W['note']}.}} " + with_math(r["note"]) + "\n\n")
     out.append(f"\\section{{{W['cleared_title']}}}\n")
@@ -472,7 +489,7 @@ def _errata_section(source: str, steps: list[Step], lang: str) -> str:
 
 def _figure_env(fig: FigureItem, lang: str) -> str:
     return ("\\begin{figure}[htbp]\n\\centering\n"
-            f"\\includegraphics[width=0.72\\linewidth]{{{fig.path}}}\n"
+            f"\\includegraphics[width=0.62\\linewidth]{{{fig.path}}}\n"
             f"\\caption{{{caption(fig, lang)}}}\\label{{fig:{label_of(fig.name)}}}\n\\end{{figure}}\n")
 
 
@@ -500,14 +517,14 @@ def shown_latex(st: Step) -> str:
 
 
 def exercises_of(steps: list[Step]) -> list[Exercise]:
-    """Exercises taken from the steps: per section, a few numbered equations that a derivation
-    produces from others (evenly spread), and up to two printed errata to find."""
+    """Exercises taken from the steps: per section, a few verified numbered equations that a
+    derivation produces from others (evenly spread), and up to two printed errata to find."""
     secs = sections_of(steps)
     per = max(3, -(-6 // max(len(secs), 1)))
     out = []
     for _, group in secs:
         cand = [s for s in group if s.entry.number and s.derivation is not None and s.derivation.uses
-                and not s.error and s.outcome.status in ("verified", "erratum", "cleared")]
+                and not s.error and s.outcome.status in ("verified", "cleared")]
         if len(cand) > per:
             cand = [cand[round(i * (len(cand) - 1) / (per - 1))] for i in range(per)]
         out += [Exercise("derive", s) for s in cand]
@@ -537,7 +554,7 @@ def handout_tex(source: str, lang: str, steps: list[Step]) -> str:
         if known:
             parts.append(known[1] + "\n\n")
         for i, st in enumerate(group):
-            parts.append(_handout_step(st, i == 0, by_id, tags[st.entry.id], lang))
+            parts.append(_handout_step(st, i, by_id, tags[st.entry.id], lang))
     exercises = exercises_of(steps)
     if exercises:
         parts.append(f"\\section{{{W['exercises']}}}\n\\begin{{enumerate}}\n")
@@ -553,18 +570,20 @@ def handout_tex(source: str, lang: str, steps: list[Step]) -> str:
     return "".join(parts)
 
 
-def _connect(st: Step, first: bool, by_id: dict[str, Step], lang: str) -> str:
+def _connect(st: Step, index: int, by_id: dict[str, Step], lang: str) -> str:
+    """The sentence that leads to a step: where it starts from (varied, deterministically)."""
     W = WORDS[lang]
     uses = [u for u in (st.derivation.uses if st.derivation else ()) if u in by_id]
     if not uses:
-        return W["start"] if first else W["states"]
+        return W["start"] if index == 0 else W["states"][index % len(W["states"])]
     refs = join_refs([ref_of(by_id, u, handout=True) for u in uses], lang)
-    return (W["from_one"] if len(uses) == 1 else W["from_many"]).format(refs=refs)
+    choices = W["from_one"] if len(uses) == 1 else W["from_many"]
+    return choices[index % len(choices)].format(refs=refs)
 
 
-def _handout_step(st: Step, first: bool, by_id: dict[str, Step], tag: str, lang: str) -> str:
+def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, lang: str) -> str:
     W = WORDS[lang]
-    out = [_connect(st, first, by_id, lang) + "\n" + tagged_display(shown_latex(st), tag, f"h:{st.label}")]
+    out = [_connect(st, index, by_id, lang) + "\n" + tagged_display(shown_latex(st), tag, f"h:{st.label}")]
     if lang == "en" and st.derivation is not None:
         out.append(paragraphs(st.derivation.doc) + "\n\n")
     status = st.outcome.status
@@ -581,7 +600,7 @@ def _handout_step(st: Step, first: bool, by_id: dict[str, Step], tag: str, lang:
 def _exercise(ex: Exercise, by_id: dict[str, Step], lang: str) -> str:
     W, st = WORDS[lang], ex.step
     if ex.kind == "errata":
-        return W["ex_errata"] + "\n" + printed_display(st.entry.latex)
+        return W["ex_errata"].format(ref=ref_of(by_id, st.entry.id, handout=True)) + "\n" + printed_display(st.entry.latex)
     uses = [ref_of(by_id, u, handout=True) for u in st.derivation.uses if u in by_id]
     ref = ref_of(by_id, st.entry.id, handout=True)
     key = "ex_derive_none" if not uses else ("ex_derive_one" if len(uses) == 1 else "ex_derive")
@@ -654,21 +673,24 @@ def write(out: Path, docs: dict[str, str]) -> list[Path]:
     so that a failure never leaves a half-written file).  Returns the paths, sorted."""
     check_writable(out)
     written = []
-    for name, tex in docs.items():
-        path = out / name
-        tmp = out / (name + ".tmp")
-        tmp.write_text(tex, encoding="utf-8")
-        _replace(tmp, path)
+
+    def put(path: Path, fill) -> None:
+        tmp = path.with_name(path.name + ".tmp")
+        try:
+            fill(tmp)
+            _replace(tmp, path)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
         written.append(path)
+
+    for name, tex in docs.items():
+        put(out / name, lambda tmp, tex=tex: tmp.write_text(tex, encoding="utf-8"))
     figs = figures_needed(docs)
     if figs:
         (out / FIGURE_DIR).mkdir(exist_ok=True)
     for f in figs:
-        path = out / f.path
-        tmp = path.with_name(path.name + ".tmp")
-        figures_mod.render(f.make(), tmp)
-        _replace(tmp, path)
-        written.append(path)
+        put(out / f.path, lambda tmp, f=f: figures_mod.render(f.make(), tmp))
     return sorted(written)
 
 

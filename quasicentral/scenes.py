@@ -103,6 +103,7 @@ POINTS_PER_PERIOD = 32
 MIN_POINTS = 257
 MAX_PERIODS = 1000
 SERIES_MAX_TERMS = 200
+FADED = 1e-6  # a revolution must end before the swing fades below this fraction of its start
 G_DEFAULT = 9.81
 EPS = np.finfo(float).eps
 
@@ -155,14 +156,18 @@ def _quantity_value(raw, dimension: str, key: str, line_of):
         else:
             other = next((d for d, (_, t) in _UNITS.items() if unit in t), None)
             if other:
-                raise SceneError(f"{raw!r} is a {other}; this key needs a {dimension} ({', '.join(table)})", key,
-                                 line_of(key))
+                raise SceneError(f"{raw!r} is {_article(other)}; this key needs {_article(dimension)} "
+                                 f"({', '.join(table)})", key, line_of(key))
             raise SceneError(f"unknown unit {unit!r} in {raw!r}; use {', '.join(table)}", key, line_of(key))
     else:
         value = float(raw)
     if not math.isfinite(value):
         raise SceneError(f"must be finite, not {raw!r}", key, line_of(key))
     return value
+
+
+def _article(noun: str) -> str:
+    return ("an " if noun[0] in "aeiou" else "a ") + noun
 
 
 def _toml_type(raw) -> str:
@@ -292,8 +297,7 @@ def _build(data, lines, line_of, err, source) -> Scene:
 
     def need(table, key):
         if key not in data[table]:
-            raise err(f"missing: [{table}] needs {key}", f"{table}.{key}") if line_of(table) else \
-                SceneError(f"missing: [{table}] needs {key}", f"{table}.{key}", None, source)
+            raise err(f"missing: [{table}] needs {key}", f"{table}.{key}")  # the table's line
         return data[table][key]
 
     def text_value(table, key, choices):
@@ -304,7 +308,6 @@ def _build(data, lines, line_of, err, source) -> Scene:
             raise err(f"unknown value {raw!r}; choose from {', '.join(choices)}", f"{table}.{key}")
         return raw
 
-    title = ""
     for key in ("title", "notes"):
         raw = data.get("scene", {}).get(key)
         if raw is not None and not isinstance(raw, str):
@@ -498,7 +501,9 @@ def _scale(scene: Scene) -> float:
             "angular-momentum": max(scene.R0 * scene.v0, EPS * scene.R0 * scene.R0 * scene.Omega)}[scene.quantity]
 
 
-def _distance(quantity: str, a, b) -> float:
+def distance(quantity: str, a, b) -> float:
+    """How far apart two answers are: the largest distance between two trajectories, the
+    largest difference of two L(t), the difference of two numbers; ∞ if one has no answer."""
     if a is None or b is None:
         return math.inf
     if quantity == "trajectory":
@@ -526,10 +531,7 @@ def a_priori(scene: Scene, model: str, rtol: float = 1e-12, terms: int | None = 
     t_eff = t_eff / (1 + x)
     drift = ((a * a + b * b) / 16 + 3 * a * b / 8) / l**2  # phase drift + apsidal precession per rad
     rounding = 4 * EPS * _scale(scene)
-
-    def capped(v, cap):
-        return min(v, cap)
-
+    capped = min  # an error of positions never exceeds twice the swing
     if q == "trajectory":
         effects = {
             "drag-linear": ("the drag, O(κT)", capped(A * (-math.expm1(-k * T) + k * k * T / (2 * Om)), 2 * A)),
@@ -639,10 +641,18 @@ def first_revolution(f, scene: Scene, rtol: float, t_max: float):
     through 2π (Y crosses zero upwards), or for a planar swing the bob is back at a turning point
     on the release side (Ẋ crosses zero downwards, after the far turning point).  The integration
     restarts at the far turning point, so a drag with a kink where the speed vanishes is never
-    stepped across.  None when no revolution completes before ``t_max`` (overdamped)."""
+    stepped across.  None when no revolution completes before ``t_max``, or before the swing
+    has faded below FADED of its start (overdamped: there the integration only follows noise)."""
     from scipy.integrate import solve_ivp
 
     atol = _atol(scene, rtol)
+    a, b = scene.semi_axes
+    floor, w2 = FADED * max(a, b), scene.Omega**2
+
+    def faded(_t, s):  # the swing's size √(X² + Y² + v²/Ω²), zero only at rest
+        return math.sqrt(s[0] * s[0] + s[1] * s[1] + (s[2] * s[2] + s[3] * s[3]) / w2) - floor
+
+    faded.terminal, faded.direction = True, -1
     # leave the start, where the event functions vanish
     t0 = scene.T0 / 8
     sol = solve_ivp(f, (0.0, t0), (scene.R0, 0.0, 0.0, scene.v0), method="DOP853", rtol=rtol, atol=atol)
@@ -653,10 +663,10 @@ def first_revolution(f, scene: Scene, rtol: float, t_max: float):
             return s[i]
 
         event.terminal, event.direction = True, direction
-        sol = solve_ivp(f, (t0, t_max), state, method="DOP853", rtol=rtol, atol=atol, events=event)
+        sol = solve_ivp(f, (t0, t_max), state, method="DOP853", rtol=rtol, atol=atol, events=(event, faded))
         if sol.status == -1:
             raise ArithmeticError(f"integration failed: {sol.message}")
-        if sol.status != 1:
+        if sol.status != 1 or not sol.t_events[0].size:
             return None
         t0, state = float(sol.t_events[0][0]), sol.y_events[0][0].copy()
         state[index] = 0.0
@@ -753,20 +763,20 @@ def decide(scene: Scene) -> Decision:
             values.append(answer(scene, name, rtol=rtol, times=times))
             seconds.append(time.perf_counter() - t0)
         if values[-1] is None:
-            raise scene.error(f"has no answer for this scene: the bob never completes a revolution "
-                              f"(the motion is aperiodic; κ ≥ Ω is overdamped)", "question.quantity")
+            raise scene.error(f"has no answer for this scene: the bob does not complete a revolution before its "
+                              f"swing fades below {FADED:g} of its start (overdamped: κ ≥ Ω)", "question.quantity")
         # the richest rung: its own integration at two tolerances
         t0 = time.perf_counter()
         loose = answer(scene, names[-1], rtol=min(1e-6, 100 * rtol), times=times)
         seconds[-1] += time.perf_counter() - t0
         n = len(names)
-        diffs = [_distance(scene.quantity, values[i], values[i + 1]) for i in range(n - 1)]
-        diffs.append(max(_distance(scene.quantity, values[-1], loose), 4 * EPS * _scale(scene)))
+        diffs = [distance(scene.quantity, values[i], values[i + 1]) for i in range(n - 1)]
+        diffs.append(max(distance(scene.quantity, values[-1], loose), 4 * EPS * _scale(scene)))
         errors = [0.0] * n
         errors[-1] = diffs[-1]
         for i in range(n - 2, -1, -1):
             # two triangle bounds, both measured: via the next richer rung, and via the richest
-            errors[i] = min(diffs[i] + errors[i + 1], _distance(scene.quantity, values[i], values[-1]) + errors[-1])
+            errors[i] = min(diffs[i] + errors[i + 1], distance(scene.quantity, values[i], values[-1]) + errors[-1])
         ratings = []
         for i, name in enumerate(names):
             # the richest rung's estimate measures the run at 100·rtol: its a priori is that run's
@@ -869,9 +879,9 @@ def document(decision: Decision) -> dict:
 
 
 def _fmt(x: float | None, unit: str) -> str:
-    if x is None or not math.isfinite(x):
+    if x is None or math.isnan(x):
         return "none (no answer)"
-    return f"{x:.3g} {unit}"
+    return f"{x:.3g} {unit}" if math.isfinite(x) else "unbounded"
 
 
 def report(decision: Decision) -> str:
@@ -950,9 +960,13 @@ def plot(decision: Decision, path) -> None:
                     d = np.hypot(lower.value[0] - upper.value[0], lower.value[1] - upper.value[1])
                 else:
                     d = np.abs(lower.value - upper.value)
-                ax.semilogy(decision.times, np.maximum(d, 1e-300), lw=0.8 if lower is not c else 1.4,
+                ax.semilogy(decision.times, np.where(d > 0, d, np.nan), lw=0.8 if lower is not c else 1.4,
                             label=f"{lower.label} − {upper.label}")
             ax.axhline(s.tolerance, color="r", lw=0.8, ls=":", label="tolerance")
+            ax.axhline(decision.richest.estimated_error, color="k", lw=0.6, ls="--",
+                       label=f"{decision.richest.label}: own error")
+            low, high = ax.get_ylim()
+            ax.set_ylim(max(low, 1e-6 * min(s.tolerance, decision.richest.estimated_error)), high)
             ax.set_xlabel("t [s]")
             ax.set_ylabel(f"difference [{s.unit}]")
             ax.legend(fontsize=7)

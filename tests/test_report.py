@@ -1,0 +1,287 @@
+"""Reports and handouts: the paper's notation, LaTeX that compiles, and golden files.
+
+The golden files under ``reports/`` are the generated LaTeX, reviewed as diffs.  When the
+derivations, the catalog, the errata or the rendering change, ``test_golden_reports`` fails
+and names the command that regenerates them (after review):
+
+    quasicentral report --all --out reports
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+from quasicentral import catalog, errata, report
+from quasicentral import symbols as S
+from quasicentral.cli import main
+from quasicentral.latex import display_rows, escape, paper_latex, text, with_math
+
+REPO = Path(__file__).resolve().parents[1]
+GOLDEN = REPO / "reports"
+REGENERATE = f"cd {REPO.name} && {report.REGENERATE}"
+
+
+# --- the printer: the paper's notation --------------------------------------------------------
+@pytest.mark.parametrize("expr, expected", [
+    (S.D(S.x), r"\dot{x}"),
+    (S.D(S.y, 2), r"\ddot{y}"),
+    (S.rho**2 * S.D(S.psi), r"\varrho^{2} \dot{\psi}"),
+    (S.D(S.phi, 2) + S.phi, r"\varphi + \ddot{\varphi}"),
+    (S.Fj(S.k, S.zeta), r"F\left(k, \zeta\right)"),
+    (S.Ej(S.k, S.zeta), r"E\left(k, \zeta\right)"),
+    (S.Kc(S.k), "K"),
+    (S.Ec(S.k), "E"),
+    (sp.elliptic_k(sp.sin(S.phi0 / 2) ** 2), r"K\left(\sin {\frac{\varphi_{0}}{2}}\right)"),
+    (S.arccotg(S.x / S.y), r"\arccotg \frac{x}{y}"),
+    (sp.Symbol("phi_t1", real=True), r"\dot{\varphi}"),  # a jet of the checker
+    (sp.Subs(S.D(S.x), S.t, 0), r"\dot{x}\left(0\right)"),
+    (sp.log(S.A), r"\ln A"),
+    (sp.log(S.rho**2 * S.D(S.psi)), r"\ln \left(\varrho^{2} \dot{\psi}\right)"),
+])
+def test_paper_notation(expr, expected):
+    assert paper_latex(expr) == expected
+
+
+def test_no_function_of_t_shows_its_argument():
+    expr = S.x * S.D(S.y) - S.y * S.D(S.x) + S.rho * S.D(S.psi, 2)
+    tex = paper_latex(expr)
+    assert "(t)" not in tex and r"\left(t \right)" not in tex and "frac{d}" not in tex
+
+
+# --- the printed LaTeX: every entry can stand in one display --------------------------------
+def _balanced(row: str) -> bool:
+    import re
+
+    from quasicentral.latex import _mask_nested
+
+    depth = 0
+    for m in re.finditer(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", _mask_nested(row)):
+        depth += 1 if m.group(0) == r"\left" else -1
+        if depth < 0:
+            return False
+    return depth == 0
+
+
+def _all_printed_latex():
+    errs, _ = errata.load()
+    out = [(e.id, e.latex) for e in catalog.entries()]
+    out += [(i + "/corrected", r.corrected_latex) for i, r in errs.items()]
+    return out
+
+
+@pytest.mark.parametrize("eid, latex", _all_printed_latex(), ids=[i for i, _ in _all_printed_latex()])
+def test_printed_rows_are_balanced(eid, latex):
+    rows = display_rows(latex)
+    assert rows and all(_balanced(r) for r in rows), rows
+    assert not any(r.rstrip().endswith("\\\\") for r in rows)
+
+
+def test_split_left_right_pairs_are_closed():
+    rows = display_rows(r"C = \left[ a - \right. \\ \left. - b \left( c + \right. \right. \\ \left. \left. + d \right) \right] + e")
+    assert len(rows) == 3 and all(_balanced(r) for r in rows)
+
+
+# --- prose: Unicode mathematics becomes LaTeX -----------------------------------------------
+_ALLOWED = set("áéíóúýčďěňřšťůžÁÉÍÓÚÝČĎĚŇŘŠŤŮŽ")
+
+
+def _prose():
+    from quasicentral.registry import REGISTRY, load_all
+
+    load_all()
+    errs, cleared = errata.load()
+    out = [d.doc for d in REGISTRY.values()] + [r.note for r in errs.values()]
+    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for e in catalog.entries()]
+    return out
+
+
+def test_prose_is_ascii_or_czech_after_escaping():
+    for s in _prose():
+        tex = with_math(s)
+        bad = {ch for ch in tex if not ch.isascii() and ch not in _ALLOWED}
+        assert not bad, (s, bad)
+
+
+def test_text_examples():
+    assert text("ρ̈") == r"\ensuremath{\ddot{\varrho}}"
+    assert text("x²") == r"\ensuremath{x^{2}}"
+    assert text("50% & $") == r"50\% \& \$"
+    assert escape("a_b") == r"a\_b"
+
+
+# --- golden files -----------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def generated(outcomes, tmp_path_factory):
+    """Every golden document generated in-process, written with its figures to a tmp dir."""
+    docs: dict[str, str] = {}
+    for kinds, langs in report.GOLDEN:
+        docs.update(report.generate(kinds, langs, outcomes))
+    out = tmp_path_factory.mktemp("reports")
+    report.write(out, docs)
+    return out, docs
+
+
+def test_golden_reports(generated):
+    """The committed reports/ are what the code generates now (versions.tex aside: it states
+    the machine's software).  On failure: review the diff, then regenerate."""
+    _, docs = generated
+    names = sorted(n for n in docs if n != report.VERSIONS_FILE)
+    committed = sorted(p.name for p in GOLDEN.glob("*.tex") if p.name != report.VERSIONS_FILE) if GOLDEN.is_dir() else []
+    problems, diffs = [], []
+    for name in names:
+        path = GOLDEN / name
+        if not path.is_file():
+            problems.append(f"missing: reports/{name}")
+            continue
+        old = path.read_text(encoding="utf-8")
+        if old != docs[name]:
+            problems.append(f"differs: reports/{name}")
+            diffs += list(difflib.unified_diff(old.splitlines(), docs[name].splitlines(), f"reports/{name}",
+                                               "generated", n=1, lineterm=""))[:40]
+    problems += [f"stale (no longer generated): reports/{n}" for n in committed if n not in names]
+    for fig in report.figures_needed(docs):
+        if not (GOLDEN / fig.path).is_file():
+            problems.append(f"missing figure: reports/{fig.path}")
+    if not (GOLDEN / report.VERSIONS_FILE).is_file():
+        problems.append(f"missing: reports/{report.VERSIONS_FILE}")
+    assert not problems, (
+        "the golden reports disagree with the code:\n  " + "\n  ".join(problems)
+        + "\n" + "\n".join(diffs[:120])
+        + f"\n\nReview the differences, then regenerate the golden files with:\n    {REGENERATE}\n")
+
+
+def test_versions_file_names_the_software():
+    tex = report.versions_tex()
+    for name in ("Python", "sympy", "mpmath", "numpy", "scipy", "python-flint", "matplotlib"):
+        assert name in tex
+    golden = GOLDEN / report.VERSIONS_FILE
+    if golden.is_file():
+        assert all(n in golden.read_text(encoding="utf-8") for n, _ in report.PACKAGES)
+
+
+def test_generation_is_byte_identical(generated, tmp_path):
+    """A second generation, in a fresh process with another hash seed (set orders differ),
+    through the CLI, gives the same bytes."""
+    out, docs = generated
+    env = {**os.environ, "PYTHONHASHSEED": "12345"}
+    proc = subprocess.run([sys.executable, "-m", "quasicentral.cli", "report", "--all", "--out", str(tmp_path)],
+                          capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    for name, tex in docs.items():
+        assert (tmp_path / name).read_text(encoding="utf-8") == tex, name
+    assert sorted(p.name for p in tmp_path.glob("*.tex")) == sorted(docs)
+    for text_ in docs.values():
+        assert str(REPO) not in text_ and str(tmp_path) not in text_  # no absolute paths
+    for fig in report.figures_needed(docs):  # figures are deterministic too
+        assert (tmp_path / fig.path).read_bytes() == (out / fig.path).read_bytes(), fig.path
+
+
+def test_every_figure_is_included(generated):
+    from quasicentral import figures
+
+    _, docs = generated
+    names = {f.name for f in report.figures_needed(docs)}
+    assert names == {make().name for make in figures.ALL}
+
+
+# --- compiling: every report and handout, to PDF, pages not blank -------------------------------
+@pytest.mark.skipif(shutil.which("latexmk") is None or shutil.which("pdftoppm") is None,
+                    reason="needs latexmk and pdftoppm (./setup.sh installs them)")
+def test_every_document_compiles(generated, tmp_path):
+    """latexmk builds every report and handout without a LaTeX error or undefined reference,
+    and the first page of each PDF has ink on it."""
+    import matplotlib.image as mpimg
+
+    src, docs = generated
+    shutil.copytree(src, tmp_path, dirs_exist_ok=True)
+    names = [n for n in docs if n != report.VERSIONS_FILE]
+    t0 = time.perf_counter()
+    pdfs = report.compile_all(tmp_path, names)
+    seconds = time.perf_counter() - t0
+    print(f"\ncompiled {len(pdfs)} documents in {seconds:.1f} s")
+    for pdf in pdfs:
+        assert pdf.is_file() and pdf.stat().st_size > 10_000, pdf
+        png_base = tmp_path / pdf.stem
+        subprocess.run(["pdftoppm", "-png", "-r", "40", "-f", "1", "-l", "1", str(pdf), str(png_base)], check=True)
+        (png,) = tmp_path.glob(pdf.stem + "-*.png")
+        img = mpimg.imread(png)
+        ink = (img[..., :3].min(axis=-1) < 0.8).mean()
+        assert ink > 0.005, f"{pdf.name}: first page looks blank ({ink:.4f} of the pixels inked)"
+
+
+def test_latex_error_names_the_log(tmp_path):
+    (tmp_path / "broken.tex").write_text("\\documentclass{article}\\begin{document}\\undefinedmacro\\end{document}\n")
+    if shutil.which("latexmk") is None:
+        pytest.skip("latexmk not installed")
+    with pytest.raises(report.LatexError) as info:
+        report.compile_one(tmp_path, "broken.tex")
+    assert str(tmp_path / "broken.log") in str(info.value)
+
+
+def test_log_problems_finds_undefined_references():
+    log = ("LaTeX Warning: Reference `e:x' on page 2 undefined on input line 7.\n"
+           "./a.tex:12: Undefined control sequence.\n"
+           "LaTeX Warning: There were undefined references.\n")
+    assert len(report.log_problems(log)) == 3
+    assert report.log_problems("Package hyperref Warning: Token not allowed in a PDF string\n") == []
+
+
+# --- the command ------------------------------------------------------------------------------
+def _run(*args, cwd=None):
+    proc = subprocess.run([sys.executable, "-m", "quasicentral.cli", *args], capture_output=True, text=True, cwd=cwd)
+    return proc.returncode, proc.stdout, proc.stderr
+
+
+@pytest.mark.parametrize("args", [["report", "--lang", "de"], ["report", "--all", "--handout"],
+                                  ["report", "--bogus"]])
+def test_report_bad_usage(args, tmp_path):
+    code, out, err = _run(*args, "--out", str(tmp_path / "r"))
+    assert code == 2 and err.count("\n") == 1 and err.startswith("quasicentral: error:"), err
+    assert not (tmp_path / "r").exists()
+
+
+def test_report_unwritable_out(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("keep me")
+    code, out, err = _run("report", "--out", str(blocker / "sub"))
+    assert code == 2 and err.count("\n") == 1 and "cannot write" in err, err
+    assert blocker.read_text() == "keep me"
+
+
+def test_failed_write_leaves_old_files_whole(tmp_path, monkeypatch):
+    (tmp_path / "a.tex").write_text("old a")
+    docs = {"a.tex": "new a", "b.tex": "new b"}
+    calls = []
+
+    def fail_second(tmp, path):
+        calls.append(path)
+        if len(calls) == 2:
+            raise OSError(28, "No space left on device")
+        tmp.replace(path)
+
+    monkeypatch.setattr(report, "_replace", fail_second)
+    with pytest.raises(OSError):
+        report.write(tmp_path, docs)
+    assert (tmp_path / "a.tex").read_text() in ("old a", "new a")
+    assert not (tmp_path / "b.tex").exists()
+    assert not list(tmp_path.glob("*.tmp"))
+
+
+def test_pdf_failure_is_exit_1_with_log(tmp_path, monkeypatch, capsys):
+    if shutil.which("latexmk") is None:
+        pytest.skip("latexmk not installed")
+    monkeypatch.setattr(report, "outcomes_for_all", lambda: {})
+    monkeypatch.setattr(report, "generate", lambda kinds, langs, outcomes: {
+        "broken-report-en.tex": "\\documentclass{article}\\begin{document}\\ref{nowhere}\\end{document}\n"})
+    code = main(["report", "--pdf", "--out", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert code == 1 and err.count("\n") == 1 and "broken-report-en.log" in err, err
