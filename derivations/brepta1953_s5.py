@@ -127,7 +127,7 @@ def moment_law_quadratic():
 
 
 # --- the undamped motion ------------------------------------------------------------------------
-def undamped(f, c_sin, c_cos) -> sp.Expr:
+def undamped(c_sin, c_cos) -> sp.Expr:
     """dsolve f'' = −(g/l) f with f(0) = c_cos, f'(0) = Ω c_sin (Ω := √(g/l), Omega-definition)."""
     ff = sp.Function("f")
     w2 = derived("brepta1953:Omega-definition").rhs ** 2
@@ -148,7 +148,7 @@ def omega_definition():
 def ideal_general_solution():
     """x = C₁ sin Ωt + C₂ cos Ωt, y = D₁ sin Ωt + D₂ cos Ωt (dsolve, constants named by their
     initial data: x(0) = C₂, ẋ(0) = ΩC₁, …)."""
-    return [sp.Eq(x, undamped(x, C1, C2)), sp.Eq(y, undamped(y, D1, D2))]
+    return [sp.Eq(x, undamped(C1, C2)), sp.Eq(y, undamped(D1, D2))]
 
 
 @derives("brepta1953:initial-conditions",
@@ -183,14 +183,14 @@ def initial_values() -> list:
 def ideal_x():
     """x = R₀ cos Ωt (x(0) = R₀, ẋ(0) = 0)."""
     x0, _, xd0, _ = initial_values()
-    return sp.Eq(x, undamped(x, xd0 / Omega, x0))
+    return sp.Eq(x, undamped(xd0 / Omega, x0))
 
 
 @derives("brepta1953:25", uses=("brepta1953:initial-conditions",), unknowns=(y,))
 def ideal_y():
     """y = (v₀/Ω) sin Ωt (y(0) = 0, ẏ(0) = v₀)."""
     _, y0, _, yd0 = initial_values()
-    return sp.Eq(y, undamped(y, yd0 / Omega, y0))
+    return sp.Eq(y, undamped(yd0 / Omega, y0))
 
 
 @derives("brepta1953:force-x", uses=("brepta1953:quadratic-drag-law",), unknowns=(D(x, 2),))
@@ -284,7 +284,7 @@ def forcing(i: int) -> sp.Expr:
 @derives("brepta1953:homogeneous-solution", uses=("brepta1953:Omega-definition",), unknowns=(x, y))
 def homogeneous_solution():
     """x = A sin Ωt + B cos Ωt, y = C sin Ωt + D cos Ωt (dsolve of ẍ + Ω²x = 0)."""
-    return [sp.Eq(x, undamped(x, A_sym, B_sym)), sp.Eq(y, undamped(y, C_sym, D_))]
+    return [sp.Eq(x, undamped(A_sym, B_sym)), sp.Eq(y, undamped(C_sym, D_))]
 
 
 # --- variation of constants ------------------------------------------------------------------

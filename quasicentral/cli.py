@@ -133,7 +133,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         args = parser.parse_args(argv)
         if args.command is None:
-            raise UsageError("a command is required: verify, errata, mutate or catalog (see --help)")
+            raise UsageError(f"a command is required: {', '.join(sorted(_COMMANDS))} (see --help)")
         return _COMMANDS[args.command](args)
     except UsageError as exc:
         print(f"quasicentral: error: {exc}", file=sys.stderr)

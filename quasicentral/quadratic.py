@@ -80,7 +80,6 @@ def _js(psi, m, ops: EllipticOps, pi):
 
 def _g(theta, m, ops):
     c2 = ops.cos(theta) ** 2
-    s2 = 1 - c2
     s2 = ops.sin(theta) ** 2
     X = 1 - m * c2
     Y = 1 - m + 0 * theta

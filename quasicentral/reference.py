@@ -54,11 +54,8 @@ METHODS = ("auto", "dop853", "heyoka", "mpmath")
 DOUBLE_TOL = 1e-14  # below this the results are mpmath numbers
 
 
-class ReferenceError_(ValueError):
-    """Bad model, parameters or method (a ValueError)."""
-
-
-ModelError = ReferenceError_
+class ModelError(ValueError):
+    """Bad model, parameters or method."""
 
 
 # --- parameters -------------------------------------------------------------------------------

@@ -143,7 +143,8 @@ def _quantity_value(raw, dimension: str, key: str, line_of):
     an unknown unit is an error naming the key."""
     si, table = _UNITS[dimension]
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
-        raise SceneError(f"must be a number ({si}) or a string like '1.5 {si}', not {_toml_type(raw)}", key, line_of(key))
+        raise SceneError(f"must be a number ({si}) or a string like '1.5 {si}', not {_toml_type(raw)}", key,
+                         line_of(key))
     if isinstance(raw, str):
         m = _NUMBER_UNIT.match(raw)
         if not m:
@@ -835,6 +836,23 @@ def _decide_planar_period(scene: Scene) -> list[Rating]:
 
 
 # --- views -------------------------------------------------------------------------------------------
+def meaning(scene: Scene) -> str:
+    """What the asked quantity means for this scene, in a sentence."""
+    q = scene.quantity
+    if q == "trajectory":
+        return "X(t), Y(t): the bob's horizontal displacement from the vertical (m)"
+    if q == "angular-momentum":
+        return "L(t) = XẎ − YẊ: the vertical angular momentum per unit mass (m²/s)"
+    end = ("the bob is back at its turning point on the release side" if scene.planar else
+           "its azimuth has turned through 2π")
+    if q == "period":
+        if scene.drag == "none":
+            return f"the period (s): the time until {end}"
+        return (f"the duration of the first revolution (s), until {end}; with drag the motion is not "
+                "periodic and each revolution lasts a little differently")
+    return f"R0 − R1 (m): how much closer to the vertical the bob is when {end}"
+
+
 def _num(x) -> float | None:
     return float(x) if x is not None and math.isfinite(x) else None
 
@@ -864,7 +882,7 @@ def document(decision: Decision) -> dict:
         return out
 
     doc = {"scene": scene.title or Path(scene.source).stem, "source": scene.source, "quantity": scene.quantity,
-           "unit": scene.unit, "tolerance": scene.tolerance, "model": chosen.model}
+           "meaning": meaning(scene), "unit": scene.unit, "tolerance": scene.tolerance, "model": chosen.model}
     if chosen.terms:
         doc["terms"] = chosen.terms
     doc.update({"description": RUNGS[chosen.model], "meets_tolerance": decision.meets,
@@ -893,7 +911,8 @@ def report(decision: Decision) -> str:
     lines = [f"scene     {s.title or Path(s.source).stem}  ({s.source})",
              f"pendulum  l = {s.length:g} m, g = {s.g:g} m/s^2 (Ω = {s.Omega:.6g} 1/s, T0 = {s.T0:.6g} s); "
              f"R0 = {s.R0:.6g} m (φ0 = {math.degrees(s.phi0):.4g}°), v0 = {s.v0:g} m/s; {drag}",
-             f"question  {what}, tolerance {s.tolerance:g} {u}"]
+             f"question  {what}, tolerance {s.tolerance:g} {u}",
+             f"          {meaning(s)}"]
     if decision.meets:
         lines.append(f"model     {c.label}: {RUNGS[c.model]}")
     else:

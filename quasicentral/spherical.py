@@ -75,13 +75,16 @@ def integrate(t, R0, v0, length, g, kappa=0.0, beta=0.0, rtol=1e-12):
     def turning(_t, s):  # planar: the speed vanishes where Ẋ does
         return s[2]
 
-    turning.terminal, turning.direction = True, 0
-    X = np.empty_like(t)
+    turning.terminal = True
+    X = np.full_like(t, np.nan)
     Y = np.zeros_like(t)
     t0, end = 0.0, float(t.max())
+    sig = -1.0 if R0 > 0 else 1.0  # from rest the bob first moves towards the vertical
     while True:
+        # the segment starts at rest (Ẋ = 0): only the crossing back through 0 ends it
+        turning.direction = -sig
         sol = solve_ivp(f, (t0, end), state, method="DOP853", rtol=rtol, atol=atol, events=turning,
-                        dense_output=True, first_step=None)
+                        dense_output=True)
         seg_end = sol.t[-1]
         mask = (t >= t0) & (t <= seg_end)
         if mask.any():
@@ -90,12 +93,7 @@ def integrate(t, R0, v0, length, g, kappa=0.0, beta=0.0, rtol=1e-12):
             break
         state = sol.y_events[0][0].copy()
         state[2] = 0.0  # exactly at rest
-        # step past the event point so it does not trigger again at once
-        t0 = seg_end
-        f_state = f(t0, state)
-        dt = 1e-9 * (end - t0)
-        state = state + dt * np.array(f_state)
-        t0 += dt
+        t0, sig = seg_end, -sig
     return X, Y
 
 

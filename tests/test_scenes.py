@@ -11,7 +11,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from quasicentral import motion, scenes
+from quasicentral import scenes
 from quasicentral.cli import main
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
@@ -80,6 +80,25 @@ def test_example_choice(decisions, name):
 
 
 # --- the physics of the rungs, by independent routes -------------------------------------------------
+TRAJECTORY_CHOICES = [n for n in sorted(EXPECTED) if EXPECTED[n][0] in ("linear", "quadratic-first-order", "quadratic")
+                      and scenes.load(SCENES / f"{n}.toml").quantity == "trajectory"]
+
+
+@pytest.mark.parametrize("name", TRAJECTORY_CHOICES)
+def test_trajectory_choice_against_the_reference_integrator(decisions, name):
+    """The chosen model's error as measured by the reference module's own full pendulum
+    (``reference.approximation_error``, an independent integration)."""
+    from quasicentral import reference
+
+    d = decisions[name]
+    s = d.scene
+    params = {"R0": s.R0, "v0": s.v0, "l": s.length, "g": s.g, **({"kappa": s.kappa} if s.kappa else {}),
+              **({"beta": s.beta} if s.beta else {})}
+    err = float(np.max(reference.approximation_error(d.chosen.model, params, d.times))) * s.R0
+    assert err <= s.tolerance
+    assert abs(err - scenes.distance("trajectory", d.chosen.value, d.richest.value)) <= d.richest.estimated_error
+
+
 def test_conical_decay_is_33(decisions):
     """(33): R1 = R0(1 − πβR0) in first order for R0Ω = v0."""
     d = decisions["conical-decay"]
@@ -174,7 +193,8 @@ def test_planar_angular_momentum_is_zero_and_the_ellipse_answers():
 
 
 def test_a_priori_orders_shrink_with_the_swing():
-    small = scenes.parse(BASE.replace("displacement = 0.1", "displacement = 0.01").replace("speed = 0.1", "speed = 0.01"))
+    small = scenes.parse(BASE.replace("displacement = 0.1", "displacement = 0.01")
+                         .replace("speed = 0.1", "speed = 0.01"))
     large = scenes.parse(BASE)
     for model in ("ellipse", "quadratic-first-order", "quadratic"):
         assert scenes.a_priori(small, model)[0] < scenes.a_priori(large, model)[0] / 50
@@ -300,10 +320,13 @@ def test_missing_file_and_missing_table(tmp_path, capsys):
 
 
 def test_units_and_amplitude():
-    s = scenes.parse(BASE.replace("length = 1.0          # m", 'length = "150 cm"').replace("g = 9.81", 'g = "9.81 m/s^2"')
-                     .replace("displacement = 0.1", "amplitude_deg = 30").replace("speed = 0.1", 'speed = "1.8 km/h"')
-                     .replace("coefficient = 0.5", 'coefficient = "0.5 1/m"').replace("duration = 4.0", 'duration = "0.5 min"')
-                     .replace("tolerance = 1e-4", 'tolerance = "2 mm"'))
+    text = BASE
+    for old, new in [("length = 1.0          # m", 'length = "150 cm"'), ("g = 9.81", 'g = "9.81 m/s^2"'),
+                     ("displacement = 0.1", "amplitude_deg = 30"), ("speed = 0.1", 'speed = "1.8 km/h"'),
+                     ("coefficient = 0.5", 'coefficient = "0.5 1/m"'), ("duration = 4.0", 'duration = "0.5 min"'),
+                     ("tolerance = 1e-4", 'tolerance = "2 mm"')]:
+        text = text.replace(old, new)
+    s = scenes.parse(text)
     assert s.length == 1.5 and s.g == 9.81 and s.v0 == pytest.approx(0.5) and s.beta == 0.5
     assert s.duration == 30.0 and s.tolerance == 0.002
     assert s.R0 == pytest.approx(1.5 * 0.5) and s.phi0 == pytest.approx(math.pi / 6)
