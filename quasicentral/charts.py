@@ -238,20 +238,6 @@ def _exact_decimal(x: float) -> str:
     return str(Decimal(x))
 
 
-def _period_ode(phi0: float, rtol: float) -> float:
-    """period.py's ODE route (quarter period to the lowest point, DOP853) at a given rtol."""
-    from scipy.integrate import solve_ivp
-
-    def lowest(t, y):
-        return y[0]
-
-    lowest.terminal, lowest.direction = True, -1
-    span = 4 * (math.log(8 / max(math.cos(phi0 / 2), 1e-300)) + 2)
-    sol = solve_ivp(lambda t, y: (y[1], -math.sin(y[0])), (0, span), (phi0, 0.0), method="DOP853",
-                    rtol=rtol, atol=rtol * 1e-2, events=lowest)
-    return 4 * sol.t_events[0][0] / (2 * math.pi)
-
-
 def measure_period(settings: Settings) -> list[dict]:
     rows = []
     for deg in (60.0, 170.0):
@@ -272,7 +258,7 @@ def measure_period(settings: Settings) -> list[dict]:
                 v, s = _timed(lambda: _period_quad(phi0, eps), settings)
                 rows.append(_row("period", case, "quadrature (scipy quad)", "quadrature", eps, s, _rel(v, ref)))
             for rt in ((1e-4, 1e-8, 1e-12) if settings.quick else (1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-13)):
-                v, s = _timed(lambda: _period_ode(phi0, rt), settings)
+                v, s = _timed(lambda: period.ode_ratio(phi0, rt), settings)
                 rows.append(_row("period", case, "ODE to the lowest point (DOP853)", "ODE", rt, s, _rel(v, ref)))
             digits = (15, 30, 60) if settings.quick else (15, 20, 30, 50, 80, 100)
             for dps in digits:
