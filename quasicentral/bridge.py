@@ -20,11 +20,31 @@ import sympy as sp
 from . import symbols as S
 
 #: sympy name -> mpmath function.  One table for the whole project.
+def _quad(f, *intervals):
+    """mpmath.quad with guard digits.  An integrand singular at an endpoint (1/√(1 − ζ²))
+    loses about half the working digits to cancellation in 1 − ζ next to it, so there the
+    precision is doubled; elsewhere ten guard digits suffice."""
+    dps = mpmath.mp.dps
+    (a, b), = intervals
+    singular = False
+    for end in (a, b):
+        try:
+            with mpmath.workdps(15):
+                val = f(end)
+            singular = singular or not mpmath.isfinite(val)
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError):
+            singular = True
+    with mpmath.workdps(2 * dps if singular else dps + 10):
+        val = mpmath.quad(f, [a, b])
+    return +val
+
+
 MPMATH_NAMES = {
     "elliptic_k": mpmath.ellipk,
     "elliptic_f": mpmath.ellipf,
     "elliptic_e": mpmath.ellipe,
     "elliptic_pi": mpmath.ellippi,
+    "quad": _quad,
 }
 
 
@@ -95,18 +115,28 @@ class Unsupported(Exception):
     """The expression has a node the ball evaluator does not handle."""
 
 
-def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256):
+def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256, seconds: float | None = None):
     """Evaluate in ``flint.acb`` at ``prec`` bits; returns an acb ball.  Raises
-    :class:`Unsupported` for nodes it cannot bound rigorously."""
+    :class:`Unsupported` for nodes it cannot bound rigorously.  ``seconds`` bounds the time
+    spent in ball integrals: past it their integrands return NaN balls, so the result is
+    simply not finite (flint's integrator cannot be interrupted by an exception)."""
+    import time
+
     import flint
 
-    old = flint.ctx.prec
+    global _DEADLINE
+    old, old_deadline = flint.ctx.prec, _DEADLINE
     flint.ctx.prec = prec
+    _DEADLINE = time.monotonic() + seconds if seconds else None
     try:
         env = {sym: _acb_exact(val) for sym, val in point.items()}
         return _arb(expr, env, False)
     finally:
         flint.ctx.prec = old
+        _DEADLINE = old_deadline
+
+
+_DEADLINE: float | None = None
 
 
 def _acb_exact(val: sp.Expr):
@@ -184,6 +214,10 @@ def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch t
         body = e.function
 
         def f(zz, an):
+            import time
+
+            if _DEADLINE is not None and time.monotonic() > _DEADLINE:
+                return acb("nan")
             return _arb(body, {**env, var: zz}, an)
 
         return acb.integral(f, a, b)

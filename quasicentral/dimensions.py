@@ -36,6 +36,9 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
         for key, d in dims.items():  # x(0) is a value of x(t)
             if isinstance(key, sp.core.function.AppliedUndef) and key.func == e.func:
                 return d
+        for key, d in dims.items():  # A(t) of a variation of constants has the dimension of A
+            if isinstance(key, sp.Symbol) and key.name == e.func.__name__:
+                return d
         raise DimensionError(f"no dimension declared for {e}")
     if isinstance(e, sp.Add):
         ds = [dimension(a, dims) for a in e.args]

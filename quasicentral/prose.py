@@ -155,13 +155,23 @@ KINDS_CS = {
     "derivative order": "řád derivace", "parenthesis": "závorky", "coefficient": "koeficient",
 }
 
-#: Czech captions of the figures that the texts lost (others fall back to their English title).
-FIGURE_CAPTIONS_CS = {
-    "fig7a": r"Obr.~7a: dráha při lineárním odporu, $\kappa = 0{,}4$~1/s, $\Omega = \sqrt{10}$~1/s, $R_0 = 0{,}1$~m, $v_0 = 0{,}1$~m/s.",
-    "fig7b": r"Obr.~7b: týž pohyb jako dvě tlumené kmitavé složky $x(t)$ a~$y(t)$.",
-    "fig8": r"Obr.~8: mez aperiodického pohybu, $\kappa = \Omega = \sqrt{10}$~1/s, $R_0 = v_0 = 0{,}1$.",
-    "overdamped": r"Přetlumený pohyb $\kappa = 2\Omega$ (v~článku není).",
-    "fig32": r"Obr.~32: poměr $T/T_0$ v~závislosti na výchylce $\varphi_0$ a~částečné součty řady (66).",
+#: Captions of the figures that the texts lost, per language (any other figure that
+#: quasicentral.figures offers is captioned by its own title).
+FIGURE_CAPTIONS = {
+    "en": {
+        "fig7a": r"Fig.~7a: the trajectory under linear drag, $\kappa = 0.4$~1/s, $\Omega = \sqrt{10}$~1/s, $R_0 = 0.1$~m, $v_0 = 0.1$~m/s.",
+        "fig7b": r"Fig.~7b: the same motion as the two damped oscillations $x(t)$ and $y(t)$.",
+        "fig8": r"Fig.~8: the limit of aperiodic motion, $\kappa = \Omega = \sqrt{10}$~1/s, $R_0 = 0.1$~m, $v_0 = 0.1$~m/s.",
+        "overdamped": r"The overdamped motion $\kappa = 2\Omega$ (not in the text).",
+        "fig32": r"Fig.~32: the ratio $T/T_0$ against the amplitude $\varphi_0$, with partial sums of the series (66).",
+    },
+    "cs": {
+        "fig7a": r"Obr.~7a: dráha při lineárním odporu, $\kappa = 0{,}4$~1/s, $\Omega = \sqrt{10}$~1/s, $R_0 = 0{,}1$~m, $v_0 = 0{,}1$~m/s.",
+        "fig7b": r"Obr.~7b: týž pohyb jako dvě tlumené kmitavé složky $x(t)$ a~$y(t)$.",
+        "fig8": r"Obr.~8: mez aperiodického pohybu, $\kappa = \Omega = \sqrt{10}$~1/s, $R_0 = 0{,}1$~m, $v_0 = 0{,}1$~m/s.",
+        "overdamped": r"Přetlumený pohyb, $\kappa = 2\Omega$ (v~článku není).",
+        "fig32": r"Obr.~32: poměr $T/T_0$ v~závislosti na výchylce $\varphi_0$ a~částečné součty řady (66).",
+    },
 }
 
 #: Sentences and labels, per language.  ``{refs}`` is a list of equation references.

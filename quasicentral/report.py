@@ -35,7 +35,7 @@ import sympy as sp
 
 from . import catalog, errata as errata_mod, figures as figures_mod, output
 from .latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
-from .prose import FIGURE_CAPTIONS_CS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
+from .prose import FIGURE_CAPTIONS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
 from .registry import REGISTRY, Derivation, as_list, derived, load_all
 from .verdict import Outcome, Verdict
 
@@ -170,9 +170,7 @@ def figures_for(source: str) -> list[FigureItem]:
 
 
 def caption(fig: FigureItem, lang: str) -> str:
-    if lang == "cs" and fig.name in FIGURE_CAPTIONS_CS:
-        return FIGURE_CAPTIONS_CS[fig.name]
-    return text(fig.title)
+    return FIGURE_CAPTIONS[lang].get(fig.name) or text(fig.title)
 
 
 # --- versions --------------------------------------------------------------------------------
@@ -436,7 +434,8 @@ def _report_entry(st: Step, by_id: dict[str, Step], lang: str) -> str:
     # the step
     if st.derivation is not None:
         d = st.derivation
-        uses = [ref_of(by_id, u, handout=False) for u in d.uses]
+        uses = [ref_of(by_id, u, handout=False) + ("\\,{\\footnotesize " + code(u) + "}" if u in by_id else "")
+                for u in d.uses]
         out.append(f"\\textbf{{{W['step']}.}} " + paragraphs(d.doc) + "\n\n")
         out.append(f"\\textbf{{{W['uses']}:}} " + (", ".join(uses) if uses else W["nothing"]) + ". "
                    + f"\\textbf{{{W['code']}:}} {code(d.module + '.' + d.func.__name__)} "
@@ -444,6 +443,11 @@ def _report_entry(st: Step, by_id: dict[str, Step], lang: str) -> str:
     if e.note:
         out.append(f"\\textbf{{{W['note']}.}} " + with_math(e.note) + "\n\n")
     return "".join(out)
+
+
+def _heading(r: dict) -> str:
+    """A subsection title for a row of the errata document: '(8)~name' or 'name'."""
+    return (f"({escape(r['number'])})~" if r.get("number") else "") + text(r["name"])
 
 
 def _errata_section(source: str, steps: list[Step], lang: str) -> str:
@@ -472,14 +476,14 @@ def _errata_section(source: str, steps: list[Step], lang: str) -> str:
                        + witness_text(r["witness"], lang) + " \\\\\n")
         out.append("\\bottomrule\n\\end{longtable}\n\n")
         for r in doc["errata"]:
-            out.append(f"\\subsection*{{\\ref{{e:{label[r['id']]}}}~{text(r['name'])}}}\n")
+            out.append(f"\\subsection*{{{_heading(r)}}}\n")
             out.append(f"\\textbf{{{W['evidence']}:}} " + text(r["evidence"] or "") + "\n\n")
             out.append(f"\\textbf{{{W['note']}.}} " + with_math(r["note"]) + "\n\n")
     out.append(f"\\section{{{W['cleared_title']}}}\n")
     if not doc["cleared"]:
         out.append(W["none_found"] + "\n\n")
     for r in doc["cleared"]:
-        out.append(f"\\subsection*{{\\ref{{e:{label[r['id']]}}}~{text(r['name'])}}}\n")
+        out.append(f"\\subsection*{{{_heading(r)}}}\n")
         out.append(f"\\textbf{{{W['suspicion']}:}} " + with_math(r["suspicion"]) + "\n\n")
         out.append(f"\\textbf{{{W['evidence']}:}} " + text(r["evidence"]) + " ("
                    + W["status"][r["status"]] + ")\n\n")
@@ -488,9 +492,10 @@ def _errata_section(source: str, steps: list[Step], lang: str) -> str:
 
 
 def _figure_env(fig: FigureItem, lang: str) -> str:
+    # the paper's own figure numbers are in the caption: no LaTeX figure counter
     return ("\\begin{figure}[htbp]\n\\centering\n"
-            f"\\includegraphics[width=0.62\\linewidth]{{{fig.path}}}\n"
-            f"\\caption{{{caption(fig, lang)}}}\\label{{fig:{label_of(fig.name)}}}\n\\end{{figure}}\n")
+            f"\\includegraphics[width=0.62\\linewidth]{{{fig.path}}}\n\n"
+            f"\\small {caption(fig, lang)}\n\\end{{figure}}\n")
 
 
 def _figures_section(source: str, lang: str) -> str:

@@ -27,7 +27,7 @@ from quasicentral.latex import display_rows, escape, paper_latex, text, with_mat
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "reports"
-REGENERATE = f"cd {REPO.name} && {report.REGENERATE}"
+REGENERATE = f"{report.REGENERATE}    (from the repository root, {REPO})"
 
 
 # --- the printer: the paper's notation --------------------------------------------------------
