@@ -17,8 +17,4 @@ MODULES = (
 
 def load() -> None:
     for name in MODULES:
-        try:
-            importlib.import_module(name)
-        except ModuleNotFoundError as exc:
-            if exc.name != name:  # a missing section is allowed only while it is being written
-                raise
+        importlib.import_module(name)

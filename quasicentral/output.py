@@ -54,13 +54,17 @@ def errata_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
                           "witness": _witness_json(w) if w else _dimensional_witness(o),
                           "note": rec.note, "status": o.status,
                           "evidence": o.verdict.detail, "method": o.verdict.method.value})
-        elif e.id in cleared:
+        if e.id in cleared:
             rec = cleared[e.id]
+            # on an erratum the suspected detail is kept in the correction: its verdict is the evidence
+            v = o.corrected_verdict if e.id in errs else o.verdict
             out_c.append({**_entry_head(e), "kind": "cleared", "suspicion": rec.suspicion,
-                          "printed_latex": e.latex, "corrected_latex": e.latex, "witness": None,
-                          "note": rec.note, "status": o.status,
-                          "evidence": f"{o.verdict.name} ({o.verdict.method.value}): {o.verdict.detail}",
-                          "method": o.verdict.method.value})
+                          "printed_latex": e.latex,
+                          "corrected_latex": errs[e.id].corrected_latex if e.id in errs else e.latex,
+                          "witness": None, "note": rec.note, "status": o.status,
+                          "evidence": (("the correction keeps it and is " if e.id in errs else "")
+                                       + f"{v.name} ({v.method.value}): {v.detail}"),
+                          "method": v.method.value})
     return {"errata": out_e, "cleared": out_c}
 
 
