@@ -199,7 +199,8 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
     defs = domain.definition_map()
     p = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.printed, defs)))
     d = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.derived, defs)))
-    scale = bridge.to_jets(substitute_definitions(claim.scale, defs)) if claim.scale is not None else None
+    scale = (bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.scale, defs)))
+             if claim.scale is not None else None)
     syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
     try:
         pts = Sampler(domain, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(opts.points)
@@ -236,22 +237,11 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
             rows.append((pt, row))
     if not early and len(rows) < max(3, opts.points // 2):
         return Inconclusive(Method.NONE, f"only {len(rows)} of {len(pts)} points could be evaluated")
-    typical = sorted(float(r[-1][3]) for _, r in rows)[len(rows) // 2]
-    floor = typical * 1e-6
     disagree, unstable = [], 0
-    for pt, row in rows:
-        ok = []
-        for (dps, (pv, dv, diff, mag)) in zip(opts.ladder, row):
-            ref = max(float(mag), floor) or 1.0
-            ok.append(float(diff) <= 10 ** (-0.6 * dps) * ref)
-        if all(ok):
-            continue
-        # a true difference is one that no rung resolves and that does not move as the
-        # precision rises; anything else is noise of an ill-conditioned evaluation
-        lo, hi = float(row[0][2]), float(row[-1][2])
-        if not any(ok) and abs(lo - hi) <= 1e-3 * hi:
-            disagree.append((hi / max(float(row[-1][3]), floor, 1e-300), pt, row))
-        else:
+    for (kind, rel), (pt, row) in zip(_classify(rows, opts.ladder), rows):
+        if kind == "disagree":
+            disagree.append((rel, pt, row))
+        elif kind == "unstable":
             unstable += 1
     n, ladder = len(rows), opts.ladder
     if disagree:
@@ -265,20 +255,34 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
     return Verified(Method.NUMERIC, f"agrees at {n} points to {math.floor(0.6 * ladder[0])}+ digits", n, ladder)
 
 
-def _refuted_already(rows, opts) -> bool:
-    """At least three points whose difference is resolved on no rung and stable between rungs."""
-    if len(rows) < 6:
-        return False
-    mags = sorted(float(r[-1][3]) for _, r in rows)
-    floor = mags[len(mags) // 2] * 1e-6
-    bad = 0
+def _classify(rows, ladder) -> list[tuple[str, float]]:
+    """Each point as ("agree" | "disagree" | "unstable", relative difference).  All in mpmath:
+    values far beyond the double range (factorials, 2^(n²)) must not overflow to inf.
+
+    Agreement: |p − d| ≤ 10^(−0.6·dps)·scale on every rung.  A true difference: resolved on no
+    rung, and stable (within 1e-3) from rung to rung; anything else is noise of an
+    ill-conditioned evaluation.  The scale is max(|p|, |d|), floored at 1e-6 of the median.
+    """
+    mags = sorted((abs(r[-1][3]) for _, r in rows), key=lambda m: m)
+    floor = mags[len(mags) // 2] * mpmath.mpf("1e-6") if mags else mpmath.mpf(0)
+    out = []
     for _, row in rows:
-        lo, hi = float(row[0][2]), float(row[-1][2])
-        refs = [max(float(r[3]), floor) or 1.0 for r in row]
-        if all(float(r[2]) > 10 ** (-0.6 * dps) * ref for r, dps, ref in zip(row, opts.ladder, refs)) \
-                and abs(lo - hi) <= 1e-3 * hi:
-            bad += 1
-    return bad >= 3
+        refs = [max(mag, floor) or mpmath.mpf(1) for (_, _, _, mag) in row]
+        ok = [diff <= mpmath.mpf(10) ** (-0.6 * dps) * ref for (dps, (_, _, diff, _), ref) in zip(ladder, row, refs)]
+        lo, hi = row[0][2], row[-1][2]
+        rel = float(min(hi / refs[-1], mpmath.mpf(1e300)))
+        if all(ok):
+            out.append(("agree", rel))
+        elif not any(ok) and abs(lo - hi) <= mpmath.mpf("1e-3") * hi:
+            out.append(("disagree", rel))
+        else:
+            out.append(("unstable", rel))
+    return out
+
+
+def _refuted_already(rows, opts) -> bool:
+    """At least three points that already disagree for good."""
+    return len(rows) >= 6 and sum(k == "disagree" for k, _ in _classify(rows, opts.ladder)) >= 3
 
 
 def _differs_somewhere(claim: Claim, domain: Domain, label: str) -> bool:

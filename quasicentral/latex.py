@@ -203,12 +203,81 @@ def paper_latex(expr, **settings) -> str:
 _BREAK = "\x00"
 
 
-def visible_width(tex: str) -> int:
-    """A rough count of the glyphs ``tex`` typesets on one line (commands count as one)."""
-    tex = re.sub(r"\\(left|right)(?![A-Za-z])\\?", "", tex)
-    tex = re.sub(r"\\frac\{", "{", tex)
-    tex = re.sub(r"\\[A-Za-z]+", "x", tex)
-    return len(re.sub(r"[{}\s^_]", "", tex))
+#: Commands typeset as words (their width is their length); others count as one glyph.
+_WORDS_WIDE = {"sin", "cos", "tan", "cot", "ln", "log", "exp", "arccotg", "arcsin", "arccos", "arctan",
+               "operatorname", "text", "lfloor", "rfloor"}
+_SPACES = {"quad": 2.0, "qquad": 4.0, ",": 0.3, ";": 0.5, ":": 0.4, "!": 0.0, " ": 0.4}
+
+
+def visible_width(tex: str) -> float:
+    """An estimate of the width of ``tex`` in display style, in glyphs: a fraction is as wide as
+    its wider part, scripts are smaller, a binary operator or relation counts its spacing."""
+    return _width(tex, 0, len(tex))[0]
+
+
+def _group(tex: str, i: int, end: int) -> tuple[float, int]:
+    """The width of the argument at tex[i] (a {...} group or a single token) and the index after."""
+    while i < end and tex[i] == " ":
+        i += 1
+    if i < end and tex[i] == "{":
+        depth, j = 0, i
+        while j < end:
+            if tex[j] == "\\":
+                j += 2
+                continue
+            depth += tex[j] == "{"
+            depth -= tex[j] == "}"
+            if depth == 0:
+                return _width(tex, i + 1, j)[0], j + 1
+            j += 1
+        return _width(tex, i + 1, end)[0], end
+    if i < end and tex[i] == "\\":
+        m = re.match(r"\\([A-Za-z]+|.)", tex[i:end])
+        return 1.0, i + (len(m.group(0)) if m else 1)
+    return (1.0, i + 1) if i < end else (0.0, i)
+
+
+def _width(tex: str, i: int, end: int) -> tuple[float, int]:
+    w = 0.0
+    while i < end:
+        ch = tex[i]
+        if ch == "\\":
+            m = re.match(r"\\([A-Za-z]+|.)", tex[i:end])
+            name = m.group(1) if m else ""
+            i += len(m.group(0)) if m else 1
+            if name == "frac" or name == "dfrac" or name == "tfrac":
+                a, i = _group(tex, i, end)
+                b, i = _group(tex, i, end)
+                w += max(a, b) * (0.7 if name == "tfrac" else 1.0) + 0.4
+            elif name in ("left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "mid"):
+                if name == "mid":
+                    w += 1
+                continue
+            elif name == "sqrt":
+                a, i = _group(tex, i, end)
+                w += a + 1.2
+            elif name in _SPACES:
+                w += _SPACES[name]
+            elif name in _WORDS_WIDE:
+                w += len(name) * 0.9 if name not in ("operatorname", "text") else 0.0
+            elif name in ("cdot", "pm", "mp", "times", "rightarrow", "mapsto", "le", "ge", "doteq", "approx"):
+                w += 2.0
+            else:
+                w += 1.0
+        elif ch in "^_":
+            a, i = _group(tex, i + 1, end)
+            w += 0.7 * a
+        elif ch in "{}":
+            i += 1
+        elif ch in "+-=<>":
+            w += 2.0
+            i += 1
+        elif ch in " &\n\t":
+            i += 1
+        else:
+            w += 1.0
+            i += 1
+    return w, i
 
 
 class _BreakingPrinter(PaperLatexPrinter):
@@ -261,7 +330,7 @@ class _BreakingPrinter(PaperLatexPrinter):
         return head + r"\left(" + self._add_broken(big) + r"\right)"
 
 
-def broken_lines(expr, width: int = 90) -> list[str]:
+def broken_lines(expr, width: int = 70) -> list[str]:
     """``expr`` in the paper's notation, broken into lines of about ``width`` glyphs; each line
     has its ``\\left``/``\\right`` pairs closed so that it typesets on its own."""
     tex = _BreakingPrinter(width).breakable(expr)
@@ -276,7 +345,7 @@ def broken_lines(expr, width: int = 90) -> list[str]:
     return [balance(line) for line in lines]
 
 
-def relation_lines(rel, width: int = 90) -> list[str]:
+def relation_lines(rel, width: int = 70) -> list[str]:
     """A derived relation (``Eq``, expression, or a (symbol, value) pair of a model) as the rows
     of an ``aligned`` display: ``lhs &= …`` then ``&\\quad …``, broken where a long sum allows."""
     if isinstance(rel, tuple):
@@ -452,7 +521,8 @@ def text(s: str, letters: bool = True) -> str:
                 j += 1
             push(True, sc[0] + "{" + "".join(parts) + "}")
             i = j
-        elif (ch in "^_" and i + 1 < n and _single_base(s, i)
+        elif (ch in "^_" and i + 1 < n
+              and (_single_base(s, i) or (ch == "^" and i > 0 and (s[i + 1] == "{" or s[i + 1].isdigit())))
               and (s[i + 1] == "{" or s[i + 1].isalnum() or s[i + 1] in MATH_CHARS)):
             if s[i + 1] == "{":
                 inner, j = _scan_braced(s, i + 1)
@@ -716,7 +786,7 @@ def _break_points(row: str) -> list[int]:
     return out
 
 
-def wrap_row(row: str, width: int = 100) -> str:
+def wrap_row(row: str, width: int = 74) -> str:
     """A printed row wider than ``width`` glyphs, broken before top-level + and − into an
     ``aligned`` block (continuation lines indented); each line keeps its \\left/\\right pairs
     closed.  Rows that fit, or that hold an environment, are returned as they are."""

@@ -1,9 +1,10 @@
 """Mutation testing of the checker: seed the typos a typesetter makes into entries that verify,
 and count how many the checker catches.
 
-Operators: sign flip of a term, changed exponent (×2, ÷2, +1), a factor 2, two symbols
-swapped, k ↔ k² (any symbol s → s²), t ↔ s (time for arc length), dropped parentheses
-(a(b + c) → ab + c).  A mutant that sympy shows equal to the original is *equivalent* and not
+Operators, each at one place of the relation: sign flip of a term, changed exponent (×2,
+÷2, +1), a factor 2, k ↔ k² (one occurrence of a symbol s → s²), dropped parentheses
+(a(b + c) → ab + c); and over the whole relation: two symbols swapped, t ↔ s (time for arc
+length).  A mutant that sympy shows equal to the original is *equivalent* and not
 counted.  Recall = detected / mutants (target 100 %); false alarms = verified entries that the
 same fast checker refutes unmutated (target 0).
 """
@@ -34,22 +35,37 @@ class Mutant:
     relations: tuple
 
 
-def _preorder(e):
-    yield e
-    if isinstance(e, (sp.Derivative,)):
-        yield from _preorder(e.expr)
+def _walk(e, path=()):
+    """(path, node) in preorder; a path is the chain of argument indices.  Differentiation
+    variables, integration variables and the arguments of the motion's functions are not sites."""
+    yield path, e
+    if isinstance(e, sp.core.function.AppliedUndef) or not e.args:
         return
-    if isinstance(e, sp.core.function.AppliedUndef):
+    if isinstance(e, sp.Derivative):
+        yield from _walk(e.expr, path + (0,))
         return
-    if isinstance(e, sp.Integral):
-        yield from _preorder(e.function)
-        for lim in e.limits:
-            for end in lim[1:]:
-                yield from _preorder(end)
+    if isinstance(e, (sp.Integral, sp.Sum)):
+        yield from _walk(e.function, path + (0,))
+        for i, lim in enumerate(e.limits, start=1):
+            for j in range(1, len(lim)):
+                yield from _walk(lim[j], path + (i, j))
         return
-    for a in e.args:
+    for i, a in enumerate(e.args):
         if isinstance(a, sp.Basic):
-            yield from _preorder(a)
+            yield from _walk(a, path + (i,))
+
+
+def _replace_at(e, path, new):
+    """``e`` with the node at ``path`` replaced by ``new`` (one site only, unlike xreplace)."""
+    if not path:
+        return new
+    args = list(e.args)
+    args[path[0]] = _replace_at(args[path[0]], path[1:], new)
+    return e.func(*args)
+
+
+def _bound(rel) -> set:
+    return {lim[0] for e in rel.atoms(sp.Integral, sp.Sum) for lim in e.limits}
 
 
 def _replace_time(e, new):
@@ -66,37 +82,49 @@ def _replace_time(e, new):
 
 
 def mutations(rel: sp.Basic):
-    """(operator, site, mutated relation) for every site of every operator, deterministic."""
-    nodes = list(dict.fromkeys(_preorder(rel)))
-    for node in nodes:
+    """(operator, site, mutated relation) for every site of every operator, deterministic.
+    Each mutation changes one place of the relation, as a typesetter's slip does."""
+    for path, node in list(_walk(rel)):
+        at = lambda new, path=path: _replace_at(rel, path, new)  # noqa: E731
         if isinstance(node, sp.Add):
             for term in node.args:
-                yield "sign flip", sp.sstr(term), rel.xreplace({node: node - 2 * term})
-                yield "factor 2", sp.sstr(term), rel.xreplace({node: node + term})
+                yield "sign flip", sp.sstr(term), at(node - 2 * term)
+                yield "factor 2", sp.sstr(term), at(node + term)
         if isinstance(node, sp.Pow) and node.exp.is_Number and node.exp not in (-1,):
             for name, ex in (("exponent x2", node.exp * 2), ("exponent /2", node.exp / 2), ("exponent +1", node.exp + 1)):
-                yield name, sp.sstr(node), rel.xreplace({node: sp.Pow(node.base, ex)})
+                yield name, sp.sstr(node), at(sp.Pow(node.base, ex))
         if isinstance(node, sp.Mul):
             adds = [a for a in node.args if isinstance(a, sp.Add)]
             if adds:
                 inner = adds[0]
                 rest = sp.Mul(*[a for a in node.args if a is not inner])
-                dropped = rest * inner.args[0] + sp.Add(*inner.args[1:])
-                yield "dropped parentheses", sp.sstr(node), rel.xreplace({node: dropped})
-    free = sorted((a for a in rel.free_symbols if a != S.t and isinstance(a, sp.Symbol)), key=str)
-    for sym in free:
-        yield "k <-> k^2", sp.sstr(sym), rel.xreplace({sym: sym**2})
+                yield "dropped parentheses", sp.sstr(node), at(rest * inner.args[0] + sp.Add(*inner.args[1:]))
+        if isinstance(node, sp.Symbol) and node != S.t and node not in _bound(rel):
+            yield "k <-> k^2", sp.sstr(node), at(node**2)
+    free = sorted((a for a in rel.free_symbols if a != S.t and isinstance(a, sp.Symbol) and a not in _bound(rel)),
+                  key=str)
     for a, b in zip(free, free[1:]):
         yield "swapped variables", f"{a} <-> {b}", rel.xreplace({a: b, b: a})
     if S.t in rel.free_symbols:
         yield "t <-> s", "t", _replace_time(rel, S.s)
 
 
+def _valid(gen):
+    """Mutations that sympy accepts (an operator may build an invalid tree: skip it)."""
+    while True:
+        try:
+            yield next(gen)
+        except StopIteration:
+            return
+        except (ValueError, TypeError):
+            continue
+
+
 def mutants_of(entry: catalog.Entry, per_entry: int | None = None) -> list[Mutant]:
     rels = entry.relations()
     out, seen = [], set()
     for i, rel in enumerate(rels):
-        for op, site, new in mutations(rel):
+        for op, site, new in _valid(mutations(rel)):
             if new == rel or new in (sp.true, sp.false) or not isinstance(new, sp.Basic):
                 continue
             key = (i, sp.srepr(new))

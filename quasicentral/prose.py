@@ -205,6 +205,7 @@ WORDS = {
                         r"report \texttt{{{report}.tex}} gives every verdict and its evidence."),
         # report labels
         "summary": "Summary",
+        "how_reached": "Verdicts reached",
         "entries": "entries",
         "printed": "As printed",
         "derived": "As re-derived",
@@ -278,6 +279,7 @@ WORDS = {
         "verified_by": (r"Všechny vztahy tohoto textu ověřil program \texttt{{quasicentral}}; zpráva "
                         r"\texttt{{{report}.tex}} uvádí každý verdikt i~jeho doklad."),
         "summary": "Přehled",
+        "how_reached": "Způsob ověření",
         "entries": "vztahů",
         "printed": "Jak je vytištěno",
         "derived": "Znovu odvozeno",

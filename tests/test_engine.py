@@ -119,3 +119,11 @@ def test_library_code_never_prints():
     offenders = [str(p) for d in ("quasicentral", "derivations") for p in (root / d).rglob("*.py")
                  if p.name not in allowed and re.search(r"^\s*print\(", p.read_text(), re.M)]
     assert not offenders
+
+
+def test_values_beyond_the_double_range_are_compared_exactly():
+    """factorial(n²) against factorial(n): ~1e2400 must not overflow into a false agreement."""
+    n_ = sp.Symbol("n_", positive=True)
+    dom = Domain.of(ranges={n_: (20, 40)})
+    v = numeric(Claim(sp.factorial(sp.floor(n_) ** 2), sp.factorial(sp.floor(n_)), "v"), dom, "big", OPTS)
+    assert isinstance(v, Refuted)
