@@ -118,8 +118,9 @@ class Unsupported(Exception):
 def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256, seconds: float | None = None):
     """Evaluate in ``flint.acb`` at ``prec`` bits; returns an acb ball.  Raises
     :class:`Unsupported` for nodes it cannot bound rigorously.  ``seconds`` bounds the time
-    spent in ball integrals: past it their integrands return NaN balls, so the result is
-    simply not finite (flint's integrator cannot be interrupted by an exception)."""
+    of CPU time spent in ball integrals: past it their integrands return NaN balls, so the
+    result is simply not finite (flint's integrator cannot be interrupted by an exception).
+    CPU time, not wall time, so that the outcome does not depend on the machine's load."""
     import time
 
     import flint
@@ -127,7 +128,7 @@ def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256, s
     global _DEADLINE
     old, old_deadline = flint.ctx.prec, _DEADLINE
     flint.ctx.prec = prec
-    _DEADLINE = time.monotonic() + seconds if seconds else None
+    _DEADLINE = time.process_time() + seconds if seconds else None
     try:
         env = {sym: _acb_exact(val) for sym, val in point.items()}
         return _arb(expr, env, False)
@@ -216,7 +217,7 @@ def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch t
         def f(zz, an):
             import time
 
-            if _DEADLINE is not None and time.monotonic() > _DEADLINE:
+            if _DEADLINE is not None and time.process_time() > _DEADLINE:
                 return acb("nan")
             return _arb(body, {**env, var: zz}, an)
 

@@ -59,7 +59,9 @@ class _Timeout(BaseException):  # BaseException: sympy's `except Exception` cann
 
 @contextmanager
 def time_limit(seconds: float):
-    """Bound a block's wall time with SIGALRM (main thread only; elsewhere unbounded)."""
+    """Bound a block's *CPU* time (SIGVTALRM; main thread only, elsewhere unbounded).  CPU time,
+    not wall time: the same check reaches the same verdict on a busy machine as on an idle one,
+    so verdicts and the reports built from them do not depend on the load."""
     if seconds <= 0 or threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -67,13 +69,13 @@ def time_limit(seconds: float):
     def handler(signum, frame):
         raise _Timeout()
 
-    old = signal.signal(signal.SIGALRM, handler)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
+    old = signal.signal(signal.SIGVTALRM, handler)
+    signal.setitimer(signal.ITIMER_VIRTUAL, seconds)
     try:
         yield
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
+        signal.setitimer(signal.ITIMER_VIRTUAL, 0)
+        signal.signal(signal.SIGVTALRM, old)
 
 
 # --- building claims ----------------------------------------------------------------------

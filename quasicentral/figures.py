@@ -6,7 +6,9 @@ that only reads the data.  Deterministic: fixed grids, fixed PNG metadata, no ti
   figure; its caption gives only the parameters of 7a/7b, so 7b shows the time histories);
 * fig. 8 — the aperiodic limit κ = Ω = √10 1/s;
 * overdamped — κ = 2Ω, the case the paper leaves out, beside them;
-* fig. 32 — T/T0 against the amplitude, with the truncations of the series (66).
+* fig. 32 — T/T0 against the amplitude, with the truncations of the series (66);
+* the measured charts (work–precision, stability maps, validity of the approximations), drawn
+  from their committed CSV files.
 """
 
 from __future__ import annotations
@@ -71,7 +73,46 @@ def fig32() -> Figure:
                   np.column_stack(cols), "period")
 
 
-ALL = (fig7a, fig7b, fig8, overdamped, fig32)
+@dataclass(frozen=True)
+class MeasuredChart:
+    """A work–precision chart, stability map or validity chart: drawn from the measurement CSV
+    that ``quasicentral charts`` wrote (it never re-measures here)."""
+
+    name: str
+    title: str
+    source: str
+    kind: str = "chart"
+
+    def render(self, path: Path) -> None:
+        from . import charts
+
+        charts.render(MEASUREMENTS / f"{self.name}.csv", path)
+
+
+MEASUREMENTS = Path(__file__).parent / "data" / "measurements"
+
+
+def measured_charts() -> list[MeasuredChart]:
+    from . import charts
+
+    out = []
+    for csv_path in sorted(MEASUREMENTS.glob("*.csv")):
+        header, _ = charts.read_csv(csv_path)
+        about_period = "period" in csv_path.stem
+        out.append(MeasuredChart(csv_path.stem, header.get("title", csv_path.stem),
+                                 "pendulum" if about_period else "brepta1953"))
+    return out
+
+
+def _measured(name):
+    def make():
+        return next(c for c in measured_charts() if c.name == name)
+
+    make.__name__ = name
+    return make
+
+
+ALL = (fig7a, fig7b, fig8, overdamped, fig32) + tuple(_measured(c.name) for c in measured_charts())
 
 
 def to_csv(fig: Figure) -> str:
@@ -127,7 +168,11 @@ def write_all(out: Path) -> list[Path]:
     for make in ALL:
         fig = make()
         csv_path, png_path = out / f"{fig.name}.csv", out / f"{fig.name}.png"
-        csv_path.write_text(to_csv(fig), encoding="utf-8")
-        render(fig, png_path)
+        if isinstance(fig, MeasuredChart):
+            csv_path.write_bytes((MEASUREMENTS / f"{fig.name}.csv").read_bytes())
+            fig.render(png_path)
+        else:
+            csv_path.write_text(to_csv(fig), encoding="utf-8")
+            render(fig, png_path)
         written += [csv_path, png_path]
     return written

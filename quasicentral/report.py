@@ -211,7 +211,8 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \newsavebox{\qcbox}
 \newcommand{\fit}[2][\linewidth]{\sbox{\qcbox}{#2}%%
   \ifdim\wd\qcbox>#1\resizebox{#1}{!}{\usebox{\qcbox}}\else\usebox{\qcbox}\fi}
-%% how a verdict was reached (machine-dependent: the golden test compares it loosely)
+%% how a verdict was reached and whether balls certify it (both time-bounded, hence
+%% machine-dependent: the golden test does not compare them)
 \newcommand{\verdicthow}[1]{#1}
 %% a label whose \ref prints #2 (an equation's number or name)
 \makeatletter
@@ -319,7 +320,8 @@ def witness_text(w, lang: str) -> str:
     out.append(f"{W['printed_value']} {code(str(get('printed')))}, "
                f"{W['derived_value']} {code(str(get('corrected')))}"
                + (f" ({get('digits')} digits)" if get("digits") else ""))
-    out.append(W["certified_yes"] if get("certified") else W["certified_no"])
+    # certification, like the method, is time-bounded upstream (ball integrals have a deadline)
+    out.append("\\verdicthow{" + (W["certified_yes"] if get("certified") else W["certified_no"]) + "}")
     return "; ".join(out)
 
 
@@ -470,7 +472,7 @@ def _errata_section(source: str, steps: list[Step], lang: str) -> str:
         for n, r in enumerate(doc["errata"]):
             w = r["witness"] or {}
             kind = KINDS_CS.get(r["kind"], r["kind"]) if lang == "cs" else r["kind"]
-            cert = W["certified_yes"] if w.get("certified") else W["certified_no"]
+            cert = "\\verdicthow{" + (W["certified_yes"] if w.get("certified") else W["certified_no"]) + "}"
             cell = lambda latex: "\\fit{$\\displaystyle " + gathered(printed_rows(latex, 54)) + "$}"  # noqa: E731
             out.append(("\\midrule\n" if n else "")
                        + f"\\ref{{e:{label[r['id']]}}} & \\textbf{{{W['table_printed']}:}}\\newline "

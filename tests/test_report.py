@@ -1,4 +1,4 @@
-"""Reports and handouts: the paper's notation, LaTeX that compiles, and golden files.
+r"""Reports and handouts: the paper's notation, LaTeX that compiles, and golden files.
 
 The golden files under ``reports/`` are the generated LaTeX, reviewed as diffs.  When the
 derivations, the catalog, the errata or the rendering change, ``test_golden_reports`` fails
@@ -7,8 +7,9 @@ and names the command that regenerates them (after review):
     quasicentral report --all --out reports
 
 The comparison is exact except for ``versions.tex`` (the machine's software) and the
-arguments of ``\verdicthow{...}`` (how each verdict was reached, which depends on the
-machine's speed through the checker's time bound for sympy; see ``mask_how``).  Two
+arguments of ``\verdicthow{...}`` (how each verdict was reached and whether ball arithmetic
+certifies it, which depend on the machine's speed through the checker's time bounds for
+sympy and for ball integrals; see ``mask_how``).  Two
 generations on one machine are compared byte for byte, everything included.
 """
 
@@ -140,8 +141,10 @@ def mask_how(tex: str) -> str:
 
     How a verdict was reached depends on the machine: the checker gives sympy a time bound, so
     a proof that finishes on a quiet machine may time out on a loaded one and the entry is then
-    settled numerically (same verdict, another method, more points).  Everything else — the
-    verdicts themselves, the printed and derived forms, the witnesses — is compared exactly.
+    settled numerically (same verdict, another method, more points); ball integrals have a
+    deadline too, so a witness certified on one machine may be left uncertified on another.
+    Everything else — the verdicts themselves, the printed and derived forms, the witnesses'
+    points and values — is compared exactly.
     """
     out, i, key = [], 0, "\\verdicthow{"
     while True:
