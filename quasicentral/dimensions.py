@@ -13,7 +13,11 @@ from .symbols import DIMENSIONLESS
 
 
 class DimensionError(ValueError):
-    pass
+    """The expression mixes dimensions: a definite inconsistency."""
+
+
+class DimensionUnknown(DimensionError):
+    """A symbol or function without a declared dimension: nothing can be concluded."""
 
 
 _TRANSCENDENTAL = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.asin, sp.acos, sp.atan, sp.acot,
@@ -29,7 +33,7 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
     if e.is_number:
         return DIMENSIONLESS
     if isinstance(e, sp.Symbol):
-        raise DimensionError(f"no dimension declared for symbol {e}")
+        raise DimensionUnknown(f"no dimension declared for symbol {e}")
     if isinstance(e, sp.Subs):  # f(t) at t = 0 has the dimension of f
         return dimension(e.expr, dims, log_ok)
     if isinstance(e, sp.core.function.AppliedUndef):
@@ -39,7 +43,7 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
         for key, d in dims.items():  # A(t) of a variation of constants has the dimension of A
             if isinstance(key, sp.Symbol) and key.name == e.func.__name__:
                 return d
-        raise DimensionError(f"no dimension declared for {e}")
+        raise DimensionUnknown(f"no dimension declared for {e}")
     if isinstance(e, sp.Add):
         ds = [dimension(a, dims) for a in e.args]
         first = ds[0]
@@ -92,11 +96,15 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
             if d != 1:
                 raise DimensionError(f"{e.func.__name__} of [{_fmt(d)}] argument {sp.sstr(a)}")
         return DIMENSIONLESS
-    raise DimensionError(f"cannot take the dimension of {sp.sstr(e)}")
+    raise DimensionUnknown(f"cannot take the dimension of {sp.sstr(e)}")
+
+
+UNDETERMINED = "undetermined: "
 
 
 def check_relation(rel: sp.Basic, dims: dict) -> str | None:
-    """None when consistent, else the reason.  An equation compares its two sides; where it
+    """None when consistent, else the reason (prefixed :data:`UNDETERMINED` when a dimension is
+    not declared, which proves nothing).  An equation compares its two sides; where it
     has logarithms of dimensional quantities (ln L = −2κt + ln A), they are combined first
     (ln(L/A)), so only their ratio needs to be dimensionless."""
     try:
@@ -108,6 +116,8 @@ def check_relation(rel: sp.Basic, dims: dict) -> str | None:
                 return f"left side [{_fmt(dl)}], right side [{_fmt(dr)}]"
         else:
             dimension(rel, dims)
+    except DimensionUnknown as exc:
+        return UNDETERMINED + str(exc)
     except DimensionError as exc:
         return str(exc)
     return None

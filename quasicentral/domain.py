@@ -127,27 +127,28 @@ class Sampler:
         for c in self.domain.constraints:
             wanted |= substitute_definitions(c, defs).free_symbols
         order = _sampling_order(wanted, ranges, defs)
+        missing = [sym for sym in order if sym not in ranges]
+        if missing:
+            raise KeyError(f"no range declared for symbol {missing[0]}")
+        # endpoints and constraints with the definitions applied, once
+        ends = {sym: tuple(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym]) for sym in order}
+        constraints = [substitute_definitions(c, defs) for c in self.domain.constraints]
         points = []
         tries = 0
         while len(points) < count and tries < count * max_tries:
             tries += 1
             pt: dict[sp.Symbol, sp.Expr] = {}
             for sym in order:
-                if sym not in ranges:
-                    raise KeyError(f"no range declared for symbol {sym}")
-                lo, hi = ranges[sym]
-                lo = sp.sympify(substitute_definitions(sp.sympify(lo), defs)).xreplace(pt)
-                hi = sp.sympify(substitute_definitions(sp.sympify(hi), defs)).xreplace(pt)
-                pt[sym] = sp.sympify(lo) + (sp.sympify(hi) - sp.sympify(lo)) * sp.Rational(
-                    rng.randrange(1, 2**20), 2**20)
-            if all(_holds(c, pt, defs) for c in self.domain.constraints):
+                lo, hi = (e.xreplace(pt) for e in ends[sym])
+                pt[sym] = lo + (hi - lo) * sp.Rational(rng.randrange(1, 2**20), 2**20)
+            if all(_holds(c, pt) for c in constraints):
                 points.append(pt)
         return points
 
 
-def _holds(constraint: sp.Basic, pt: dict, defs: dict) -> bool:
-    c = substitute_definitions(constraint, defs).xreplace(pt)
-    c = substitute_definitions(c, defs).xreplace(pt)
+def _holds(constraint: sp.Basic, pt: dict) -> bool:
+    """A constraint (definitions already applied) at an exact point."""
+    c = constraint.xreplace(pt)
     try:
         if c in (sp.true, True):
             return True

@@ -13,6 +13,7 @@ import random
 import re
 import warnings
 
+import mpmath
 import sympy as sp
 
 from . import bridge
@@ -69,18 +70,25 @@ def _translate(parsed: sp.Basic, ours: sp.Basic) -> sp.Basic | None:
 
 
 def _agree(a: sp.Basic, b: sp.Basic, seed: int) -> bool:
+    """Both sides equal at 3 random points (20 digits), each side compiled once for mpmath."""
+    from .check import _Timeout, time_limit
+
     a, b = bridge.to_jets(a), bridge.to_jets(b)
-    syms = sorted(a.free_symbols | b.free_symbols, key=str)
+    syms = tuple(sorted(a.free_symbols | b.free_symbols, key=str))
     rng = random.Random(seed)
-    for _ in range(3):
-        pt = {s: sp.Rational(rng.randrange(2000, 9000), 10000) for s in syms}
-        try:
-            va = complex(sp.N(a.xreplace(pt), 20))
-            vb = complex(sp.N(b.xreplace(pt), 20))
-        except (TypeError, ValueError, ZeroDivisionError):
-            return False
-        if not abs(va - vb) <= 1e-9 * max(1.0, abs(va), abs(vb)):
-            return False
+    try:
+        with time_limit(3.0):
+            fa, fb = bridge.mp_function(a, syms), bridge.mp_function(b, syms)
+            for _ in range(3):
+                vals = [bridge.mp_value(sp.Rational(rng.randrange(2000, 9000), 10000), 20) for _ in syms]
+                with mpmath.workdps(20):
+                    va, vb = fa(*vals), fb(*vals)
+                    if not abs(va - vb) <= mpmath.mpf("1e-9") * max(1, abs(va), abs(vb)):
+                        return False
+    except _Timeout:
+        return False
+    except Exception:  # noqa: BLE001 - a parse that cannot be evaluated does not count
+        return False
     return True
 
 
@@ -101,6 +109,8 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
                 warnings.simplefilter("ignore")
                 parsed = parse_latex(preprocess(chunk), backend=backend)
         except Exception:  # noqa: BLE001 - any parser failure means "not read"
+            return False
+        if not isinstance(parsed, sp.Basic):  # lark may hand back an unresolved parse tree
             return False
         parsed = _translate(parsed, rel)
         if parsed is None:

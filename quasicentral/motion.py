@@ -111,8 +111,14 @@ def linear(t, R0, v0, Omega, kappa, ops: Ops = DOUBLE):
         ph, phe = ops.two_prod(w, t)
         phe = phe + wl * t
         sn, cs = ops.sin(ph), ops.cos(ph)
-        c = cs - phe * sn
-        s = (sn + phe * cs) / w * (1 - wl / w)
+        if ops is DOUBLE and np.max(np.abs(ph), initial=0.0) > 1e7:
+            # the correction is no longer tiny: rotate by it exactly
+            ce, se = np.cos(phe), np.sin(phe)
+            c = cs * ce - sn * se
+            s = (sn * ce + cs * se) / w * (1 - wl / w)
+        else:
+            c = cs - phe * sn  # |phe| ≤ ulp(ωt): its square is below the rounding
+            s = (sn + phe * cs) / w * (1 - wl / w)
         return R0 * damp * (c + kappa * s), v0 * damp * s
     if w2 + w2e == 0:
         return R0 * damp * (1 + kappa * t), v0 * damp * t
@@ -161,6 +167,8 @@ def integrate_linear(t, R0, v0, Omega, kappa, rtol=1e-12):
     rhs = lambda _t, u: (u[2], u[3], -Omega**2 * u[0] - 2 * kappa * u[2], -Omega**2 * u[1] - 2 * kappa * u[3])  # noqa: E731
     sol = solve_ivp(rhs, (0, float(t.max())), (R0, 0.0, 0.0, v0), method="DOP853", t_eval=t, rtol=rtol,
                     atol=rtol * max(R0, v0 / Omega) * 1e-3)
+    if not sol.success:
+        raise ParameterError(f"the integration failed: {sol.message}")
     return sol.y[0], sol.y[1]
 
 
@@ -173,6 +181,11 @@ MODELS = {
 }
 
 
+#: how far in time each model is evaluated: the closed forms while the double-double phase
+#: resolves ωt (and Dekker's splitting cannot overflow), the integrations within seconds
+MAX_PERIODS = {"ellipse": 1e150, "linear": 1e150, "quadratic-first-order": 1e12, "quadratic": 1e5}
+
+
 def trajectory(model: str, t, R0, v0, Omega2, kappa=0, beta=0, dps: int | None = None):
     """(x, y) arrays for a model; with ``dps`` the parameters are mpmath numbers and the
     evaluation runs at that precision (inside a local context)."""
@@ -181,6 +194,10 @@ def trajectory(model: str, t, R0, v0, Omega2, kappa=0, beta=0, dps: int | None =
     check_parameters(R0, v0, Omega2, kappa, beta)
     if model not in MODELS:
         raise ParameterError(f"unknown model {model!r}; choose from {', '.join(MODELS)}")
+    periods = max((float(x) for x in t), default=0.0) * math.sqrt(float(Omega2)) / (2 * math.pi)
+    if periods > MAX_PERIODS[model]:
+        raise ParameterError(f"model {model} covers at most {MAX_PERIODS[model]:.0e} periods 2π/Ω; "
+                             f"the last time asked is {periods:.3g} periods")
     if model == "ellipse":
         kappa = 0
     if dps is None:

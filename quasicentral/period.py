@@ -219,6 +219,8 @@ def period_ratio_rounded(*, delta: str | None = None, phi0: str | None = None, a
     of the ball round alike."""
     import flint
 
+    with mpmath.workdps(30):  # the same domain checks as every other route, before any ball
+        _complement_sine_mp(phi0, delta, amplitude_deg)
     old = flint.ctx.prec
     try:
         prec = int(3.33 * digits) + 32

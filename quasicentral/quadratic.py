@@ -146,6 +146,8 @@ def integrate_full(t, R0, v0, Omega, beta, rtol: float = 1e-12):
     scale = max(R0, v0 / Omega)
     sol = solve_ivp(rhs, (0.0, float(t.max()) if t.size else 0.0), (R0, 0.0, 0.0, v0), method="DOP853",
                     t_eval=t, rtol=rtol, atol=rtol * scale * 1e-2)
+    if not sol.success:
+        raise ValueError(f"the integration of (26)–(27) failed: {sol.message}")
     return sol.y[0], sol.y[1]
 
 

@@ -34,6 +34,7 @@ from pathlib import Path
 import sympy as sp
 
 from . import catalog, errata as errata_mod, figures as figures_mod, output
+from .files import write_atomic
 from .latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
 from .prose import FIGURE_CAPTIONS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
 from .registry import REGISTRY, Derivation, as_list, derived, load_all
@@ -686,10 +687,6 @@ def _render(fig, path: Path) -> None:
         figures_mod.render(fig, path)
 
 
-def _replace(tmp: Path, path: Path) -> None:
-    tmp.replace(path)
-
-
 def write(out: Path, docs: dict[str, str]) -> list[Path]:
     """Write the documents and the figures they include (each via a temporary file and a rename,
     so that a failure never leaves a half-written file).  Returns the paths, sorted."""
@@ -697,13 +694,7 @@ def write(out: Path, docs: dict[str, str]) -> list[Path]:
     written = []
 
     def put(path: Path, fill) -> None:
-        tmp = path.with_name(path.name + ".tmp")
-        try:
-            fill(tmp)
-            _replace(tmp, path)
-        finally:
-            if tmp.exists():
-                tmp.unlink()
+        write_atomic(path, fill)
         written.append(path)
 
     for name, tex in docs.items():

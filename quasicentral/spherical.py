@@ -70,6 +70,8 @@ def integrate(t, R0, v0, length, g, kappa=0.0, beta=0.0, rtol=1e-12):
     atol = rtol * R0 * 1e-2
     if not (beta and v0 == 0):
         sol = solve_ivp(f, (0.0, float(t.max())), state, method="DOP853", t_eval=t, rtol=rtol, atol=atol)
+        if not sol.success:
+            raise ModelError(f"the integration failed: {sol.message}")
         return sol.y[0], sol.y[1]
 
     def turning(_t, s):  # planar: the speed vanishes where Ẋ does
@@ -85,6 +87,8 @@ def integrate(t, R0, v0, length, g, kappa=0.0, beta=0.0, rtol=1e-12):
         turning.direction = -sig
         sol = solve_ivp(f, (t0, end), state, method="DOP853", rtol=rtol, atol=atol, events=turning,
                         dense_output=True)
+        if not sol.success:
+            raise ModelError(f"the integration failed: {sol.message}")
         seg_end = sol.t[-1]
         mask = (t >= t0) & (t <= seg_end)
         if mask.any():

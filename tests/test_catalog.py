@@ -5,7 +5,7 @@ import sympy as sp
 
 from quasicentral import catalog, errata
 from quasicentral.catalog import CatalogError, load_file
-from quasicentral.dimensions import check_relation
+from quasicentral.dimensions import UNDETERMINED, check_relation
 from quasicentral.registry import REGISTRY, load_all
 
 ENTRIES = catalog.entries()
@@ -42,6 +42,7 @@ def test_dimensions(eid):
     equation that mixes units is an error in print, and must be recorded as one)."""
     e = catalog.get(eid)
     problems = [p for p in (check_relation(r, e.dims) for r in e.relations()) if p]
+    assert not any(p.startswith(UNDETERMINED) for p in problems), f"a dimension is not declared: {problems}"
     errs, _ = errata.load()
     if problems:
         assert eid in errs, f"dimensionally inconsistent and not a registered erratum: {problems}"

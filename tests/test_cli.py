@@ -19,6 +19,7 @@ def run(*args):
     ["verify", "--source", "nosuch"],
     ["verify", "--dps", "0"],
     ["verify", "--dps", "-5"],
+    ["verify", "--dps", "3"],
     ["verify", "--dps", "100000"],
     ["verify", "--dps", "nan"],
     ["verify", "--bogus"],

@@ -29,7 +29,18 @@ def test_verdict_json_round_trip():
     assert type(r).from_json(r.to_json()) == r
 
 
-def test_registry_refuses_duplicates_and_missing_docstrings():
+@pytest.fixture
+def scratch_registry():
+    """The test's registrations are removed again, so the real registry stays the catalog's."""
+    from quasicentral.registry import REGISTRY
+
+    before = set(REGISTRY)
+    yield
+    for key in set(REGISTRY) - before:
+        del REGISTRY[key]
+
+
+def test_registry_refuses_duplicates_and_missing_docstrings(scratch_registry):
     @derives("test:unique-1")
     def f():
         """x = 1."""

@@ -26,7 +26,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from quasicentral import catalog, errata, report
+from quasicentral import files, catalog, errata, report
 from quasicentral import symbols as S
 from quasicentral.cli import main
 from quasicentral.latex import display_rows, escape, paper_latex, text, with_math
@@ -300,18 +300,23 @@ def test_failed_write_leaves_old_files_whole(tmp_path, monkeypatch):
     docs = {"a.tex": "new a", "b.tex": "new b"}
     calls = []
 
-    def fail_second(tmp, path):
+    real = files.write_atomic
+
+    def fail_second(path, fill):
         calls.append(path)
         if len(calls) == 2:
-            raise OSError(28, "No space left on device")
-        tmp.replace(path)
+            def failing(tmp):
+                fill(tmp)
+                raise OSError(28, "No space left on device")
+            return real(path, failing)
+        return real(path, fill)
 
-    monkeypatch.setattr(report, "_replace", fail_second)
+    monkeypatch.setattr(report, "write_atomic", fail_second)
     with pytest.raises(OSError):
         report.write(tmp_path, docs)
     assert (tmp_path / "a.tex").read_text() in ("old a", "new a")
     assert not (tmp_path / "b.tex").exists()
-    assert not list(tmp_path.glob("*.tmp"))
+    assert not [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
 
 
 def test_pdf_failure_is_exit_1_with_log(tmp_path, monkeypatch, capsys):
