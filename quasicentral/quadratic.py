@@ -22,8 +22,13 @@ Here, with ψ = φ − π/2 (so that 1 − m cos²φ = 1 − m sin²ψ = Δ²) a
     Dₘ(ψ) = (F − E)(ψ|m)/m = sin³ψ R_D(cos²ψ, Δ², 1)/3   (|ψ| ≤ π/2; DLMF 19.25.1 / 19.29),
 
 so I_B(θ) = J_c(θ − π/2) − J_c(−π/2) and I_C(θ) = J_s(θ − π/2) − J_s(−π/2).  Every term is
-free of 1/m; Δ² is formed as cos²ψ + (1 − m) sin²ψ (accurate as m → 1).  At m = 1 exactly
-(v0 = 0, a planar swing) V = u|sin θ| and the integrals are elementary.
+free of 1/m.  Near the planar limit m → 1 the natural variable is the complementary parameter
+m' = 1 − m = (v0/u)², formed directly from v0/u rather than as 1 − m (which keeps only its
+leading digits once m is rounded): Δ² = cos²ψ + m' sin²ψ, and the complete integrals are taken
+from m' as E = 2 R_G(0, m', 1) and (K − E)/m = R_D(0, m', 1)/3 (DLMF 19.25.1), free of
+cancellation.  (mpmath's ellipe(m) itself loses about half its digits as m → 1: at 40 digits,
+E(1 − 10⁻⁴⁰) comes out wrong by 5·10⁻¹¹.)  At m' = 0 exactly (v0 = 0, a planar swing)
+V = u|sin θ| and the integrals are elementary.
 """
 
 from __future__ import annotations
@@ -43,8 +48,8 @@ class EllipticOps:
     cos: object
     sqrt: object
     elliprd: object
+    elliprg: object
     ellipeinc: object
-    ellipe: object
     floor: object
     asarray: object
     pi: object
@@ -53,53 +58,54 @@ class EllipticOps:
 def _double() -> EllipticOps:
     from scipy import special
 
-    return EllipticOps(np.sin, np.cos, np.sqrt, special.elliprd, special.ellipeinc, special.ellipe, np.floor,
+    return EllipticOps(np.sin, np.cos, np.sqrt, special.elliprd, special.elliprg, special.ellipeinc, np.floor,
                        lambda a: np.asarray(a, dtype=float), math.pi)
 
 
 def _mp() -> EllipticOps:
     v = lambda f, n=1: np.frompyfunc(f, n, 1)  # noqa: E731
-    return EllipticOps(v(mpmath.sin), v(mpmath.cos), v(mpmath.sqrt), v(mpmath.elliprd, 3), v(mpmath.ellipe, 2),
-                       mpmath.ellipe, v(mpmath.floor),
+    return EllipticOps(v(mpmath.sin), v(mpmath.cos), v(mpmath.sqrt), v(mpmath.elliprd, 3), mpmath.elliprg,
+                       v(mpmath.ellipe, 2), v(mpmath.floor),
                        lambda a: np.array([mpmath.mpf(x) for x in np.ravel(a)], dtype=object), None)
 
 
-def _js(psi, m, ops: EllipticOps, pi):
-    """J_s(ψ) = ∫₀^ψ sin²ψ √(1 − m sin²ψ) dψ for any real ψ (quasi-periodic reduction)."""
+def _js(psi, m, mc, ops: EllipticOps, pi):
+    """J_s(ψ) = ∫₀^ψ sin²ψ √(1 − m sin²ψ) dψ for any real ψ (quasi-periodic reduction);
+    mc = 1 − m, formed by the caller without cancellation."""
     j = ops.floor(psi / pi + 0.5)
     r = psi - j * pi  # in [−π/2, π/2)
     sn, cs = ops.sin(r), ops.cos(r)
-    d2 = cs * cs + (1 - m) * sn * sn
+    d2 = cs * cs + mc * sn * sn
     dm = sn**3 * ops.elliprd(cs * cs, d2, 1 + 0 * r) / 3
-    dm_full = ops.elliprd(0 * m, 1 - m, 1 + 0 * m) / 3  # (K − E)/m
-    ecomp = ops.ellipe(m)
+    dm_full = ops.elliprd(0 * mc, mc, 1 + 0 * mc) / 3  # (K − E)/m
+    ecomp = 2 * ops.elliprg(0 * mc, mc, 1 + 0 * mc)  # E(m)
     dm = dm + 2 * j * dm_full
     e = ops.ellipeinc(r, m + 0 * r) + 2 * j * ecomp
-    return ((1 - m) * dm + e - sn * cs * ops.sqrt(d2)) / 3, e
+    return (mc * dm + e - sn * cs * ops.sqrt(d2)) / 3, e
 
 
-def _g(theta, m, ops):
+def _g(theta, m, mc, ops):
     c2 = ops.cos(theta) ** 2
     s2 = ops.sin(theta) ** 2
-    X = 1 - m * c2
-    Y = 1 - m + 0 * theta
+    X = s2 + mc * c2  # 1 − m cos²θ
+    Y = mc + 0 * theta
     num = X * X + X * Y + Y * Y
     den = X * ops.sqrt(X) + Y * ops.sqrt(Y)
     out = s2 * num / np.where(den == 0, 1, den) / 3
     return np.where(den == 0, 0 * theta, out)
 
 
-def _integrals(theta, m, ops: EllipticOps, pi):
+def _integrals(theta, m, mc, ops: EllipticOps, pi):
     """(I_B, I_C) at θ."""
-    if m == 1:  # v0 = 0: √(1 − cos²φ) = |sin φ|, elementary
+    if mc == 0:  # v0 = 0: √(1 − cos²φ) = |sin φ|, elementary
         j = ops.floor(theta / pi)
         r = theta - j * pi
         c = ops.cos(r)
-        ib = j * 4 / 3 + (2 / 3 - c + c**3 / 3)
+        ib = j * 4 / 3 + (2 - 3 * c + c**3) / 3
         ic = j * 2 / 3 + (1 - c**3) / 3
         return ib, ic
-    js_t, e_t = _js(theta - pi / 2, m, ops, pi)
-    js_0, e_0 = _js(-pi / 2 + 0 * m, m, ops, pi)  # a constant: one evaluation
+    js_t, e_t = _js(theta - pi / 2, m, mc, ops, pi)
+    js_0, e_0 = _js(-pi / 2 + 0 * m, m, mc, ops, pi)  # a constant: one evaluation
     ic = js_t - js_0
     ib = (e_t - js_t) - (e_0 - js_0)
     return ib, ic
@@ -117,9 +123,14 @@ def first_order(t, R0, v0, Omega, beta, ops: EllipticOps | None = None):
     pi = ops.pi if ops.pi is not None else mpmath.pi
     theta = Omega * t
     u = R0 * Omega
-    m = (u - v0) * (u + v0) / (u * u)
-    ib, ic = _integrals(theta, m, ops, pi)
-    g = _g(theta, m, ops)
+    m = (u - v0) * (u + v0) / (u * u)  # accurate near m = 0 (v0 ≈ u)
+    mc = (v0 / u) ** 2  # 1 − m, accurate near m = 1 (v0 ≪ u)
+    if ops is DOUBLE and mc < np.finfo(float).tiny:
+        # scipy's R_D(0, m', 1) overflows for subnormal m'; the planar integrals differ from the
+        # exact ones by O(m' ln(1/m')) < 10⁻³⁰⁵ there
+        mc = 0.0
+    ib, ic = _integrals(theta, m, mc, ops, pi)
+    g = _g(theta, m, mc, ops)
     sn, cs = ops.sin(theta), ops.cos(theta)
     x = beta * R0 * R0 * g * sn + (R0 - beta * R0 * R0 * ib) * cs
     y = v0 / Omega * ((1 - beta * R0 * ic) * sn + beta * R0 * g * cs)

@@ -45,6 +45,17 @@ def test_against_numerical_integration(kappa):
     assert np.max(np.abs(x - xi)) < 1e-11 and np.max(np.abs(y - yi)) < 1e-11
 
 
+@pytest.mark.parametrize("kappa", [0.3, OMEGA, 3 * OMEGA])
+def test_blocked_evaluation_equals_pointwise(kappa):
+    """Long arrays go through in blocks of motion.CHUNK: every point, block edges included,
+    equals its evaluation alone."""
+    t = np.linspace(0, 30, 2 * motion.CHUNK + 7)
+    x, y = motion.linear(t, 0.1, 0.1, OMEGA, kappa)
+    idx = [0, motion.CHUNK - 1, motion.CHUNK, 2 * motion.CHUNK, t.size - 1]
+    xs, ys = motion.linear(t[idx], 0.1, 0.1, OMEGA, kappa)
+    assert np.array_equal(x[idx], xs) and np.array_equal(y[idx], ys)
+
+
 def test_regimes_join_continuously_at_critical_damping():
     t = np.linspace(0, 3, 31)
     xc, yc = motion.linear(t, 0.1, 0.1, OMEGA, OMEGA)

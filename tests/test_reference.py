@@ -7,7 +7,7 @@ import math
 import mpmath
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, example, given, settings, strategies as st
 
 from quasicentral import motion, period, quadratic, reference as R
 
@@ -199,6 +199,8 @@ def test_linear_closed_form_against_the_reference_integrator(kappa_ratio, v0, t)
 
 @settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(v0_ratio=st.floats(0.0, 1.5), beta=st.floats(0.0, 2.0), theta=st.floats(0.0, 12 * math.pi))
+@example(v0_ratio=1e-20, beta=1.0, theta=4.0)  # m = 1 − 10⁻⁴⁰: 1 − m must not be formed by subtraction
+@example(v0_ratio=8.162074779734221e-159, beta=0.0, theta=0.0)  # 1 − m subnormal in double precision
 def test_quadratic_first_order_against_40_digits_of_itself(v0_ratio, beta, theta):
     """The closed form at any k² and Ωt against 40 digits of itself (the reference for the
     first-order solution, cross-checked by integration in tests/test_quadratic.py)."""
