@@ -213,6 +213,16 @@ def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch t
         var, lo, hi = e.limits[0]
         a, b = _arb(lo, env, analytic), _arb(hi, env, analytic)
         body = e.function
+        for end in (a, b):
+            # flint's integrator needs the integrand analytic on the whole path: at an integrable
+            # endpoint singularity (1/√(1 − ζ²) at ζ = 1) it only returns a non-finite ball, after
+            # seconds of subdivision — say so at once instead
+            try:
+                finite = _arb(body, {**env, var: end}, False).is_finite()
+            except ZeroDivisionError:
+                finite = False
+            if not finite:
+                raise Unsupported("the integrand is unbounded at an end of the path")
 
         def f(zz, an):
             import time
