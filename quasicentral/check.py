@@ -355,17 +355,26 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
     dim_problems = [r for r in found if not r.startswith(UNDETERMINED)]
     dim_text = ("inconsistent: " + "; ".join(dim_problems) if dim_problems
                 else "; ".join(found) if found else "consistent")
+
+    def unsettled(reason: str) -> Verdict:
+        # a relation whose two sides differ in dimension is wrong whatever the comparison
+        if dim_problems:
+            return Refuted(Method.DIMENSIONAL, f"dimensionally inconsistent ({reason})", dimensions=dim_text)
+        return Inconclusive(Method.NONE, reason, dimensions=dim_text)
+
     try:
         result = derived(derivation.id)
     except Exception as exc:  # noqa: BLE001 - a failing derivation is an inconclusive entry
-        return Inconclusive(Method.NONE, f"derivation failed: {type(exc).__name__}: {exc}", dimensions=dim_text)
+        return unsettled(f"derivation failed: {type(exc).__name__}: {exc}")
     try:
         with time_limit(opts.symbolic_seconds):
             claims = claims_for(printed, derivation, result)
-    except (_Timeout, Exception) as exc:  # noqa: BLE001 - a relation sympy cannot solve is inconclusive
+    except _Timeout:
+        claims = f"cannot set up the comparison: sympy did not solve the relation within {opts.symbolic_seconds} s"
+    except Exception as exc:  # noqa: BLE001 - a relation sympy cannot solve is inconclusive
         claims = f"cannot set up the comparison: {type(exc).__name__}: {exc}"[:300]
     if isinstance(claims, str):
-        return Inconclusive(Method.NONE, claims, dimensions=dim_text)
+        return unsettled(claims)
     verdicts = []
     defs = derivation.domain.definition_map()
     for i, claim in enumerate(claims):

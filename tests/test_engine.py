@@ -94,6 +94,26 @@ def test_symbolic_stage_and_its_time_bound():
     assert interrupted and time.process_time() - t0 < 2
 
 
+def test_dimensional_inconsistency_refutes_even_when_the_comparison_cannot_be_set_up(scratch_registry):
+    """A relation whose sides differ in dimension is wrong: no failing derivation or unsolvable
+    relation may turn it into "inconclusive" (mutation testing found T² = … undetected)."""
+    from quasicentral import catalog
+    from quasicentral.check import check
+    from quasicentral.registry import REGISTRY
+
+    @derives("test:fails")
+    def broken():
+        """A derivation that fails."""
+        raise RuntimeError("no")
+
+    dims = catalog.get("pendulum:53").dims
+    wrong, right = sp.Eq(l**2, g * t**2), sp.Eq(l, g * t**2)
+    v = check([wrong], dims, REGISTRY["test:fails"], "test:fails", OPTS)
+    assert isinstance(v, Refuted) and v.method is Method.DIMENSIONAL and "derivation failed" in v.detail
+    v = check([right], dims, REGISTRY["test:fails"], "test:fails", OPTS)
+    assert isinstance(v, Inconclusive) and "derivation failed" in v.detail
+
+
 def test_fundamental_theorem_settles_an_integral_sympy_cannot_do():
     """F(k, ζ) equals its defining integral: d/dζ of the difference is 0 and it vanishes at 0."""
     u = sp.Symbol("u_", real=True)
