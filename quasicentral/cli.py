@@ -28,14 +28,14 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError(message)
 
 
-def _positive_int(name: str, upper: int, lower: int = 1):
+def _positive_int(name: str, upper: int):
     def parse(text: str) -> int:
         try:
             val = int(text)
         except ValueError:
             raise argparse.ArgumentTypeError(f"{name} must be a whole number, not {text!r}") from None
-        if val < lower or val > upper:
-            raise argparse.ArgumentTypeError(f"{name} must be between {lower} and {upper}, not {val}")
+        if val <= 0 or val > upper:
+            raise argparse.ArgumentTypeError(f"{name} must be between 1 and {upper}, not {val}")
         return val
 
     return parse
@@ -51,7 +51,7 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--source", choices=sorted(SOURCES))
     v.add_argument("--id", action="append", dest="ids", metavar="ID", help="only this entry (repeatable)")
     v.add_argument("--json", action="store_true")
-    v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS, lower=15), default=30,
+    v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30,
                    help="first rung of the precision ladder, decimal digits (default 30; the ladder is dps, 2·dps)")
     v.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (a cold run)")
     v.add_argument("--junit", metavar="FILE", help="also write a JUnit XML report")
@@ -170,9 +170,13 @@ def _verify(args) -> int:
     from . import output, verify
     from .check import Options
 
+    try:
+        opts = Options(dps=args.dps)  # the ladder's floor is the checker's (Options.MIN_DPS)
+    except ValueError as exc:
+        raise UsageError(f"--dps: {exc}") from None
     entries = _selected(args)
     t0 = time.perf_counter()
-    outcomes = verify.run(entries, Options(dps=args.dps), use_cache=not args.no_cache, jobs=args.jobs)
+    outcomes = verify.run(entries, opts, use_cache=not args.no_cache, jobs=args.jobs)
     seconds = time.perf_counter() - t0
     doc = output.verify_document(entries, outcomes)
     if args.junit:

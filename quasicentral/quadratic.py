@@ -53,20 +53,21 @@ class EllipticOps:
     floor: object
     asarray: object
     pi: object
+    tiny: float  # the smallest normal number: a smaller 1 − m is the planar limit (scipy's R_D overflows there)
 
 
 def _double() -> EllipticOps:
     from scipy import special
 
     return EllipticOps(np.sin, np.cos, np.sqrt, special.elliprd, special.elliprg, special.ellipeinc, np.floor,
-                       lambda a: np.asarray(a, dtype=float), math.pi)
+                       lambda a: np.asarray(a, dtype=float), math.pi, float(np.finfo(float).tiny))
 
 
 def _mp() -> EllipticOps:
     v = lambda f, n=1: np.frompyfunc(f, n, 1)  # noqa: E731
     return EllipticOps(v(mpmath.sin), v(mpmath.cos), v(mpmath.sqrt), v(mpmath.elliprd, 3), mpmath.elliprg,
                        v(mpmath.ellipe, 2), v(mpmath.floor),
-                       lambda a: np.array([mpmath.mpf(x) for x in np.ravel(a)], dtype=object), None)
+                       lambda a: np.array([mpmath.mpf(x) for x in np.ravel(a)], dtype=object), None, 0.0)
 
 
 def _js(psi, m, mc, ops: EllipticOps, pi):
@@ -125,10 +126,10 @@ def first_order(t, R0, v0, Omega, beta, ops: EllipticOps | None = None):
     u = R0 * Omega
     m = (u - v0) * (u + v0) / (u * u)  # accurate near m = 0 (v0 ≈ u)
     mc = (v0 / u) ** 2  # 1 − m, accurate near m = 1 (v0 ≪ u)
-    if ops is DOUBLE and mc < np.finfo(float).tiny:
-        # scipy's R_D(0, m', 1) overflows for subnormal m'; the planar integrals differ from the
-        # exact ones by O(m' ln(1/m')) < 10⁻³⁰⁵ there
-        mc = 0.0
+    if mc < ops.tiny:
+        # a subnormal m' in double precision: the planar integrals differ from the exact ones
+        # by O(m' ln(1/m')) < 10⁻³⁰⁵
+        mc = 0 * mc
     ib, ic = _integrals(theta, m, mc, ops, pi)
     g = _g(theta, m, mc, ops)
     sn, cs = ops.sin(theta), ops.cos(theta)

@@ -677,16 +677,6 @@ def check_writable(out: Path) -> None:
     probe.unlink()
 
 
-def _render(fig, path: Path) -> None:
-    """A figure of quasicentral.figures.ALL as a PNG: by its own ``render`` when it has one
-    (a figure module of its own), else by :func:`quasicentral.figures.render`."""
-    own = getattr(fig, "render", None)
-    if callable(own):
-        own(path)
-    else:
-        figures_mod.render(fig, path)
-
-
 def write(out: Path, docs: dict[str, str]) -> list[Path]:
     """Write the documents and the figures they include (each via a temporary file and a rename,
     so that a failure never leaves a half-written file).  Returns the paths, sorted."""
@@ -703,7 +693,7 @@ def write(out: Path, docs: dict[str, str]) -> list[Path]:
     if figs:
         (out / FIGURE_DIR).mkdir(exist_ok=True)
     for f in figs:
-        put(out / f.path, lambda tmp, f=f: _render(f.make(), tmp))
+        put(out / f.path, lambda tmp, f=f: figures_mod.draw(f.make(), tmp))
     return sorted(written)
 
 

@@ -19,6 +19,7 @@ from pathlib import Path
 
 from . import catalog, errata
 from .check import Options, check
+from .files import write_text
 from .registry import REGISTRY, load_all
 from .verdict import Inconclusive, Method, Outcome, Refuted, Verdict, Verified
 
@@ -129,9 +130,7 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
         try:
             cdir.mkdir(parents=True, exist_ok=True)
             for eid in todo:
-                tmp = cdir / f"{key_of[eid]}.json.tmp"
-                tmp.write_text(json.dumps(results[eid], sort_keys=True))
-                tmp.replace(cdir / f"{key_of[eid]}.json")
+                write_text(cdir / f"{key_of[eid]}.json", json.dumps(results[eid], sort_keys=True))
         except OSError:
             pass  # a read-only cache is not an error
     return [_outcome_from_json(results[e.id]) for e in entries]
