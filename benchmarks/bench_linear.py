@@ -11,7 +11,7 @@ import numpy as np
 
 from _timing import best_of, machine
 
-from quasicentral import motion
+from quasicentral.models import motion
 
 OMEGA = math.sqrt(10.0)
 

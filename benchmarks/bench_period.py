@@ -10,7 +10,7 @@ import numpy as np
 
 from _timing import best_of, machine
 
-from quasicentral import period as P
+from quasicentral.models import period as P
 
 
 def ulps(method, phis=None, deltas=None):

@@ -14,7 +14,7 @@ import numpy as np
 
 from _timing import best_of, machine
 
-from quasicentral import quadratic as Q
+from quasicentral.models import quadratic as Q
 
 OMEGA, R0 = math.sqrt(10.0), 0.1
 

@@ -15,7 +15,9 @@ import time
 
 import numpy as np
 
-from quasicentral import charts, reference as R
+from quasicentral.studies import charts
+
+from quasicentral.models import reference as R
 
 OMEGA = math.sqrt(10.0)
 T = 2 * math.pi / OMEGA

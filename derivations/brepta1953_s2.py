@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from quasicentral.domain import Domain
-from quasicentral.registry import derived, derives
-from quasicentral.symbols import A, B, D, R, S, alpha, beta, kappa, m, psi, rho, s, t, v
+from quasicentral.notation.domain import Domain
+from quasicentral.engine.registry import derived, derives
+from quasicentral.notation.symbols import A, B, D, R, S, alpha, beta, kappa, m, psi, rho, s, t, v
 
 E_RHO = sp.Matrix([sp.cos(psi), sp.sin(psi)])
 E_TAU = sp.Matrix([-sp.sin(psi), sp.cos(psi)])

@@ -14,8 +14,8 @@ from __future__ import annotations
 import sympy as sp
 from sympy.calculus.euler import euler_equations
 
-from quasicentral.registry import derived, derives
-from quasicentral.symbols import C, C1, C2, C3, C4, D, Omega, S, Tper, g, l, m, phi, psi, rho, t
+from quasicentral.engine.registry import derived, derives
+from quasicentral.notation.symbols import C, C1, C2, C3, C4, D, Omega, S, Tper, g, l, m, phi, psi, rho, t
 
 EPS = sp.Symbol("epsilon", positive=True)  # bookkeeping parameter of the small amplitude
 

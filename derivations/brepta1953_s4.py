@@ -15,9 +15,9 @@ from __future__ import annotations
 import sympy as sp
 
 from derivations import brepta1953_s2, brepta1953_s3  # noqa: F401  (register the steps used here)
-from quasicentral.domain import Domain
-from quasicentral.registry import derived, derives
-from quasicentral.symbols import (A, B, C, D, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, arccotg, g,
+from quasicentral.notation.domain import Domain
+from quasicentral.engine.registry import derived, derives
+from quasicentral.notation.symbols import (A, B, C, D, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, arccotg, g,
                                   kappa, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y)
 
 EX, EY = sp.Matrix([1, 0]), sp.Matrix([0, 1])

@@ -33,9 +33,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from quasicentral.domain import Domain
-from quasicentral.registry import derived, derives
-from quasicentral.symbols import (
+from quasicentral.notation.domain import Domain
+from quasicentral.engine.registry import derived, derives
+from quasicentral.notation.symbols import (
     A as A_sym, B as B_sym, C as C_sym, C1, C2, C3, C4, D, D1, D2, D_, Omega, R0, alpha, ax, ay,
     g, k, l, m, psi, rho, s, t, th, u, v, v0, x, y, z, zeta,
 )

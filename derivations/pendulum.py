@@ -32,9 +32,9 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from quasicentral.domain import Domain
-from quasicentral.registry import derived, derives
-from quasicentral.symbols import (
+from quasicentral.notation.domain import Domain
+from quasicentral.engine.registry import derived, derives
+from quasicentral.notation.symbols import (
     D, E_tot, Cst, Omega, T_kin, Tper, V_pot, g, l, m, n, phi, phi0, t, v, vphi, w,
 )
 

@@ -42,7 +42,7 @@ def _positive_int(name: str, upper: int):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from .catalog import SOURCES
+    from quasicentral.engine.catalog import SOURCES
 
     p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.")
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
@@ -143,7 +143,7 @@ def main(argv: list[str] | None = None) -> int:
         print("quasicentral: interrupted", file=sys.stderr)
         return 130
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
-        from .catalog import CatalogError
+        from quasicentral.engine.catalog import CatalogError
 
         if isinstance(exc, CatalogError):
             print(f"quasicentral: error: malformed data: {exc}", file=sys.stderr)
@@ -153,7 +153,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _selected(args):
-    from . import catalog
+    from quasicentral.engine import catalog
 
     entries = catalog.entries(getattr(args, "source", None))
     ids = getattr(args, "ids", None)
@@ -167,8 +167,9 @@ def _selected(args):
 
 
 def _verify(args) -> int:
-    from . import output, verify
-    from .check import Options
+    from quasicentral.engine import formats as output
+    from quasicentral.engine import run as verify
+    from quasicentral.engine.checker import Options
 
     try:
         opts = Options(dps=args.dps)  # the ladder's floor is the checker's (Options.MIN_DPS)
@@ -190,8 +191,9 @@ def _verify(args) -> int:
 
 
 def _errata(args) -> int:
-    from . import output, verify
-    from .check import Options
+    from quasicentral.engine import formats as output
+    from quasicentral.engine import run as verify
+    from quasicentral.engine.checker import Options
 
     entries = _selected(args)
     outcomes = verify.run(entries, Options(), use_cache=not args.no_cache)
@@ -204,7 +206,7 @@ def _errata(args) -> int:
 
 
 def _mutate(args) -> int:
-    from . import mutate
+    from quasicentral.engine import mutate
 
     res = mutate.run(source=args.source, per_entry=args.per_entry)
     if args.json:
@@ -215,7 +217,8 @@ def _mutate(args) -> int:
 
 
 def _catalog(args) -> int:
-    from . import latexparse, output
+    from quasicentral.engine import latexparse
+    from quasicentral.engine import formats as output
 
     entries = _selected(args)
     cov = latexparse.coverage(entries)
@@ -229,7 +232,7 @@ def _catalog(args) -> int:
 
 def _write_atomic(path: Path, text: str) -> None:
     """Write via a temporary file and rename, so a failure never leaves a half-written file."""
-    from .files import write_text
+    from quasicentral.files import write_text
 
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -239,7 +242,7 @@ def _write_atomic(path: Path, text: str) -> None:
 
 
 def _period(args) -> int:
-    from . import period as P
+    from quasicentral.models import period as P
 
     if args.table:
         rows = P.table()
@@ -307,7 +310,7 @@ def _period(args) -> int:
 def _trajectory(args) -> int:
     import mpmath
 
-    from . import motion
+    from quasicentral.models import motion
 
     if args.model not in motion.MODELS:
         raise UsageError(f"unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
@@ -410,7 +413,7 @@ def _times(args, num):
 
 def _scene(args) -> int:
     """Exit 0 when a model meets the scene's tolerance, 1 when none does, 2 on a bad scene."""
-    from . import scenes
+    from quasicentral.studies import scenes
 
     try:
         decision = scenes.decide(scenes.load(args.file))
@@ -429,7 +432,7 @@ def _scene(args) -> int:
 
 
 def _figures(args) -> int:
-    from . import figures
+    from quasicentral.studies import figures
 
     try:
         paths = figures.write_all(Path(args.out))
@@ -441,7 +444,7 @@ def _figures(args) -> int:
 
 
 def _report(args) -> int:
-    from . import report
+    from quasicentral.documents import report
 
     if args.all and (args.handout or args.lang != "en"):
         raise UsageError("--all writes every document: leave out --handout and --lang")
@@ -476,7 +479,7 @@ def _report(args) -> int:
 
 
 def _charts(args) -> int:
-    from . import charts
+    from quasicentral.studies import charts
 
     out = Path(args.out)
     if args.only:

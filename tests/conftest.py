@@ -6,8 +6,8 @@ import os
 import pytest
 from hypothesis import settings
 
-from quasicentral import catalog
-from quasicentral.check import Options
+from quasicentral.engine import catalog
+from quasicentral.engine.checker import Options
 
 # Property tests explore at random on a developer's machine (where they found, e.g., the loss of
 # digits of mpmath's ellipe near m = 1) and replay a fixed sequence in CI, so that a landing never
@@ -18,7 +18,7 @@ settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 @pytest.fixture(scope="session")
 def outcomes(tmp_path_factory):
-    from quasicentral import verify
+    from quasicentral.engine import run as verify
 
     os.environ["QUASICENTRAL_CACHE"] = str(tmp_path_factory.mktemp("cache"))
     entries = catalog.entries()

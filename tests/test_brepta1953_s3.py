@@ -7,8 +7,8 @@ import mpmath
 import sympy as sp
 
 from derivations import brepta1953_s3 as s3
-from quasicentral.registry import derived, load_all
-from quasicentral.symbols import C1, C2, C3, C4, D, R, S, g, l, m, phi, psi, rho, t
+from quasicentral.engine.registry import derived, load_all
+from quasicentral.notation.symbols import C1, C2, C3, C4, D, R, S, g, l, m, phi, psi, rho, t
 
 load_all()
 

@@ -8,12 +8,13 @@ import pytest
 import sympy as sp
 
 from derivations import brepta1953_s4 as s4
-from quasicentral import catalog, errata
-from quasicentral.check import Options, check
-from quasicentral.domain import Domain
-from quasicentral.registry import REGISTRY, derived, load_all
-from quasicentral.symbols import (A, D, K1, L1, M1, N1, Omega, R0, kappa, n, omega, parse, t, th, v0, x, y)
-from quasicentral.verdict import Refuted, Verified
+from quasicentral.engine import catalog
+from quasicentral.engine import errata
+from quasicentral.engine.checker import Options, check
+from quasicentral.notation.domain import Domain
+from quasicentral.engine.registry import REGISTRY, derived, load_all
+from quasicentral.notation.symbols import (A, D, K1, L1, M1, N1, Omega, R0, kappa, n, omega, parse, t, th, v0, x, y)
+from quasicentral.engine.verdict import Refuted, Verified
 
 load_all()
 OPTS = Options(symbolic=False, points=12)

@@ -12,10 +12,11 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from derivations import brepta1953_s5 as s5
-from quasicentral import catalog, errata
-from quasicentral.domain import substitute_definitions
-from quasicentral.registry import derived, load_all
-from quasicentral.symbols import Omega, R0, beta, g, k, l, t, u, v0, z, zeta
+from quasicentral.engine import catalog
+from quasicentral.engine import errata
+from quasicentral.notation.domain import substitute_definitions
+from quasicentral.engine.registry import derived, load_all
+from quasicentral.notation.symbols import Omega, R0, beta, g, k, l, t, u, v0, z, zeta
 
 load_all()
 ERRATA, _ = errata.load()

@@ -3,10 +3,12 @@
 import pytest
 import sympy as sp
 
-from quasicentral import catalog, errata
-from quasicentral.catalog import CatalogError, load_file
-from quasicentral.dimensions import UNDETERMINED, check_relation
-from quasicentral.registry import REGISTRY, load_all
+from quasicentral.engine import catalog
+
+from quasicentral.engine import errata
+from quasicentral.engine.catalog import CatalogError, load_file
+from quasicentral.notation.dimensions import UNDETERMINED, check_relation
+from quasicentral.engine.registry import REGISTRY, load_all
 
 ENTRIES = catalog.entries()
 IDS = [e.id for e in ENTRIES]

@@ -10,7 +10,15 @@ import mpmath
 import numpy as np
 import pytest
 
-from quasicentral import charts as C, motion, period, quadratic, reference as R
+from quasicentral.studies import charts as C
+
+from quasicentral.models import motion
+
+from quasicentral.models import period
+
+from quasicentral.models import quadratic
+
+from quasicentral.models import reference as R
 
 OMEGA = math.sqrt(10.0)
 

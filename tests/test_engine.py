@@ -4,12 +4,12 @@ import mpmath
 import pytest
 import sympy as sp
 
-from quasicentral import bridge
-from quasicentral.check import Claim, Options, _ftc_zero, numeric, symbolic_zero, time_limit
-from quasicentral.domain import Domain
-from quasicentral.registry import RegistryError, derives
-from quasicentral.symbols import Fj, Kc, g, k, l, t, zeta
-from quasicentral.verdict import Inconclusive, Method, Refuted, Verified, Witness, combine
+from quasicentral.notation import bridge
+from quasicentral.engine.checker import Claim, Options, _ftc_zero, numeric, symbolic_zero, time_limit
+from quasicentral.notation.domain import Domain
+from quasicentral.engine.registry import RegistryError, derives
+from quasicentral.notation.symbols import Fj, Kc, g, k, l, t, zeta
+from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verified, Witness, combine
 
 OPTS = Options(points=12)
 
@@ -32,7 +32,7 @@ def test_verdict_json_round_trip():
 @pytest.fixture
 def scratch_registry():
     """The test's registrations are removed again, so the real registry stays the catalog's."""
-    from quasicentral.registry import REGISTRY
+    from quasicentral.engine.registry import REGISTRY
 
     before = set(REGISTRY)
     yield
@@ -97,9 +97,9 @@ def test_symbolic_stage_and_its_time_bound():
 def test_dimensional_inconsistency_refutes_even_when_the_comparison_cannot_be_set_up(scratch_registry):
     """A relation whose sides differ in dimension is wrong: no failing derivation or unsolvable
     relation may turn it into "inconclusive" (mutation testing found T² = … undetected)."""
-    from quasicentral import catalog
-    from quasicentral.check import check
-    from quasicentral.registry import REGISTRY
+    from quasicentral.engine import catalog
+    from quasicentral.engine.checker import check
+    from quasicentral.engine.registry import REGISTRY
 
     @derives("test:fails")
     def broken():

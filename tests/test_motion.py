@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from quasicentral import motion
+from quasicentral.models import motion
 from quasicentral.cli import main
 
 OMEGA = math.sqrt(10.0)

@@ -4,8 +4,10 @@ the unmutated catalog must raise no alarm."""
 import pytest
 import sympy as sp
 
-from quasicentral import catalog, mutate
-from quasicentral.symbols import k, t, x
+from quasicentral.engine import catalog
+
+from quasicentral.engine import mutate
+from quasicentral.notation.symbols import k, t, x
 
 
 def test_operators_produce_the_typical_typos():

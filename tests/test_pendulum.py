@@ -10,9 +10,9 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from derivations import pendulum as P
-from quasicentral import catalog
-from quasicentral.registry import derived
-from quasicentral.symbols import Tper, g, l, n, phi0, w
+from quasicentral.engine import catalog
+from quasicentral.engine.registry import derived
+from quasicentral.notation.symbols import Tper, g, l, n, phi0, w
 
 G, LEN = 9.81, 0.75  # any values: T scales as sqrt(l/g)
 AMPLITUDES_DEG = (1, 10, 45, 90, 135, 170)

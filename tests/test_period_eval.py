@@ -9,7 +9,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from quasicentral import period as P
+from quasicentral.models import period as P
 from quasicentral.cli import main
 
 # T/T0 at 10°, 90°, 179°: 20 digits, pinned (two methods agreed at 60 digits)

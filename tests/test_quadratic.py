@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from quasicentral import quadratic as Q
+from quasicentral.models import quadratic as Q
 
 OMEGA = math.sqrt(10.0)
 R0 = 0.1

@@ -9,7 +9,13 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, example, given, settings, strategies as st
 
-from quasicentral import motion, period, quadratic, reference as R
+from quasicentral.models import motion
+
+from quasicentral.models import period
+
+from quasicentral.models import quadratic
+
+from quasicentral.models import reference as R
 
 OMEGA = math.sqrt(10.0)
 T = 2 * math.pi / OMEGA

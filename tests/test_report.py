@@ -26,10 +26,16 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from quasicentral import files, catalog, errata, report
-from quasicentral import symbols as S
+from quasicentral import files
+
+from quasicentral.engine import catalog
+
+from quasicentral.engine import errata
+
+from quasicentral.documents import report
+from quasicentral.notation import symbols as S
 from quasicentral.cli import main
-from quasicentral.latex import display_rows, escape, paper_latex, text, with_math
+from quasicentral.documents.latex import display_rows, escape, paper_latex, text, with_math
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "reports"
@@ -67,7 +73,7 @@ def test_no_function_of_t_shows_its_argument():
 def _balanced(row: str) -> bool:
     import re
 
-    from quasicentral.latex import _mask_nested
+    from quasicentral.documents.latex import _mask_nested
 
     depth = 0
     for m in re.finditer(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", _mask_nested(row)):
@@ -101,7 +107,7 @@ _ALLOWED = set("áéíóúýčďěňřšťůžÁÉÍÓÚÝČĎĚŇŘŠŤŮŽ")
 
 
 def _prose():
-    from quasicentral.registry import REGISTRY, load_all
+    from quasicentral.engine.registry import REGISTRY, load_all
 
     load_all()
     errs, cleared = errata.load()
@@ -224,7 +230,7 @@ def test_generation_is_byte_identical(generated, tmp_path):
 
 
 def test_every_figure_is_included(generated):
-    from quasicentral import figures
+    from quasicentral.studies import figures
 
     _, docs = generated
     names = {f.name for f in report.figures_needed(docs)}

@@ -11,7 +11,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from quasicentral import scenes
+from quasicentral.studies import scenes
 from quasicentral.cli import main
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
@@ -88,7 +88,7 @@ TRAJECTORY_CHOICES = [n for n in sorted(EXPECTED) if EXPECTED[n][0] in ("linear"
 def test_trajectory_choice_against_the_reference_integrator(decisions, name):
     """The chosen model's error as measured by the reference module's own full pendulum
     (``reference.approximation_error``, an independent integration)."""
-    from quasicentral import reference
+    from quasicentral.models import reference
 
     d = decisions[name]
     s = d.scene

@@ -8,7 +8,9 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from quasicentral import motion, spherical as S
+from quasicentral.models import motion
+
+from quasicentral.models import spherical as S
 
 L_, G_ = 1.0, 10.0
 OMEGA = math.sqrt(G_ / L_)

@@ -4,11 +4,15 @@ import mpmath
 import pytest
 import sympy as sp
 
-from quasicentral import bridge, catalog, errata
-from quasicentral.check import claims_for
-from quasicentral.domain import substitute_definitions
-from quasicentral.registry import REGISTRY, derived, load_all
-from quasicentral.verdict import Method, Refuted, Verified
+from quasicentral.notation import bridge
+
+from quasicentral.engine import catalog
+
+from quasicentral.engine import errata
+from quasicentral.engine.checker import claims_for
+from quasicentral.notation.domain import substitute_definitions
+from quasicentral.engine.registry import REGISTRY, derived, load_all
+from quasicentral.engine.verdict import Method, Refuted, Verified
 
 IDS = [e.id for e in catalog.entries()]
 ERRATA, CLEARED = errata.load()

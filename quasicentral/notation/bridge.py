@@ -17,7 +17,7 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from . import symbols as S
+from quasicentral.notation import symbols as S
 
 #: sympy name -> mpmath function.  One table for the whole project.
 def _quad(f, *intervals):

@@ -204,7 +204,7 @@ MAX_PERIODS = {"ellipse": 1e150, "linear": 1e150, "quadratic-first-order": 1e12,
 def trajectory(model: str, t, R0, v0, Omega2, kappa=0, beta=0, dps: int | None = None):
     """(x, y) arrays for a model; with ``dps`` the parameters are mpmath numbers and the
     evaluation runs at that precision (inside a local context)."""
-    from . import quadratic
+    from quasicentral.models import quadratic
 
     check_parameters(R0, v0, Omega2, kappa, beta)
     if model not in MODELS:

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from . import errata as errata_mod
-from .catalog import Entry
-from .verdict import Outcome
+from quasicentral.engine import errata as errata_mod
+from quasicentral.engine.catalog import Entry
+from quasicentral.engine.verdict import Outcome
 
 
 def _entry_head(e: Entry) -> dict:
@@ -18,7 +18,7 @@ def _entry_head(e: Entry) -> dict:
 
 
 def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
-    from .verify import summary
+    from quasicentral.engine.run import summary
 
     rows = []
     for e, o in zip(entries, outcomes):
@@ -75,7 +75,7 @@ def _dimensional_witness(o: Outcome) -> dict:
 
 
 def catalog_document(entries: list[Entry], coverage: dict) -> dict:
-    from .dimensions import check_relation
+    from quasicentral.notation.dimensions import check_relation
 
     rows = []
     for e in entries:

@@ -21,7 +21,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import motion, period
+from quasicentral.models import motion
+
+from quasicentral.models import period
 
 OMEGA = math.sqrt(10.0)
 R0 = V0 = 0.1
@@ -84,16 +86,16 @@ class MeasuredChart:
     kind: str = "chart"
 
     def render(self, path: Path) -> None:
-        from . import charts
+        from quasicentral.studies import charts
 
         charts.render(MEASUREMENTS / f"{self.name}.csv", path)
 
 
-MEASUREMENTS = Path(__file__).parent / "data" / "measurements"
+MEASUREMENTS = Path(__file__).parent.parent / "data" / "measurements"
 
 
 def measured_charts() -> list[MeasuredChart]:
-    from . import charts
+    from quasicentral.studies import charts
 
     out = []
     for csv_path in sorted(MEASUREMENTS.glob("*.csv")):

@@ -581,7 +581,7 @@ def invariants(sol: Solution) -> dict:
 def closed_form_error(sol: Solution) -> float:
     """max |(x, y) − closed form| / scale for the linear model (the closed form of
     :func:`quasicentral.motion.linear`, exact in all three regimes), at the solution's precision."""
-    from . import motion
+    from quasicentral.models import motion
 
     p = sol.problem
     if p.model != "linear":
@@ -649,7 +649,8 @@ def approximation_error(model: str, params: dict, t, *, tol: float = 1e-11, agai
     >>> float(e[0]), bool(1e-6 < e[1] < 1e-4)
     (0.0, True)
     """
-    from . import motion, quadratic
+    from quasicentral.models import motion
+    from quasicentral.models import quadratic
 
     if model not in APPROXIMATIONS:
         raise ModelError(f"unknown model {model!r}; choose from {', '.join(APPROXIMATIONS)}")

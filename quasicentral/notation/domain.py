@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from . import symbols as S
+from quasicentral.notation import symbols as S
 
 Interval = tuple[sp.Expr, sp.Expr]
 

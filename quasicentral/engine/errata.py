@@ -17,7 +17,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from .catalog import CatalogError, load as load_catalog, parse_transcription
+from quasicentral.engine.catalog import CatalogError, load as load_catalog, parse_transcription
 
 KINDS = ("sign", "exponent", "wrong variable", "missing factor", "limits of integration",
          "range of validity", "OCR glyph", "derivative order", "parenthesis", "coefficient")

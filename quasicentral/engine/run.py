@@ -17,11 +17,13 @@ from dataclasses import asdict
 from multiprocessing import get_context
 from pathlib import Path
 
-from . import catalog, errata
-from .check import Options, check
-from .files import write_text
-from .registry import REGISTRY, load_all
-from .verdict import Inconclusive, Method, Outcome, Refuted, Verdict, Verified
+from quasicentral.engine import catalog
+
+from quasicentral.engine import errata
+from quasicentral.engine.checker import Options, check
+from quasicentral.files import write_text
+from quasicentral.engine.registry import REGISTRY, load_all
+from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Verdict, Verified
 
 CACHE_VERSION = "1"
 
@@ -45,7 +47,7 @@ def code_fingerprint() -> str:
             h.update(f"{dist}={metadata.version(dist)}".encode())
         except metadata.PackageNotFoundError:
             h.update(dist.encode())
-    for pkg in (Path(__file__).parent, Path(derivations.__file__).parent):
+    for pkg in (Path(__file__).parent.parent, Path(derivations.__file__).parent):
         for path in sorted(pkg.rglob("*")):
             if path.suffix in (".py", ".toml") and "__pycache__" not in path.parts:
                 h.update(path.relative_to(pkg.parent).as_posix().encode())

@@ -45,7 +45,13 @@ from pathlib import Path
 import mpmath
 import numpy as np
 
-from . import motion, period, quadratic, reference
+from quasicentral.models import motion
+
+from quasicentral.models import period
+
+from quasicentral.models import quadratic
+
+from quasicentral.models import reference
 
 OMEGA = math.sqrt(10.0)
 QUANTITIES = ("period", "elliptic", "linear", "quadratic", "quadratic-full", "spherical")
@@ -490,7 +496,7 @@ def measure_full(settings: Settings, quantity: str) -> list[dict]:
             else:
                 for rt in ((1e-4, 1e-8, 1e-12) if settings.quick else (1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-12, 1e-13)):
                     kw = {"beta": params.get("beta", 0.0), "kappa": params.get("kappa", 0.0)}
-                    from . import spherical
+                    from quasicentral.models import spherical
 
                     v, s = _timed(lambda: spherical.integrate(t, params["R0"], params["v0"], 1.0, 10.0, rtol=rt, **kw),
                                   settings)

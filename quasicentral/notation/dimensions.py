@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .symbols import DIMENSIONLESS
+from quasicentral.notation.symbols import DIMENSIONLESS
 
 
 class DimensionError(ValueError):

@@ -26,7 +26,7 @@ from typing import Callable
 
 import sympy as sp
 
-from .domain import Domain
+from quasicentral.notation.domain import Domain
 
 MODES = ("solve", "substitute", "expression", "condition")
 

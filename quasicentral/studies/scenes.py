@@ -83,7 +83,13 @@ from pathlib import Path
 
 import numpy as np
 
-from . import motion, period, quadratic, spherical
+from quasicentral.models import motion
+
+from quasicentral.models import period
+
+from quasicentral.models import quadratic
+
+from quasicentral.models import spherical
 
 QUANTITIES = {"trajectory": "m", "period": "s", "decay-per-revolution": "m", "angular-momentum": "m^2/s"}
 DRAGS = ("none", "linear", "quadratic")

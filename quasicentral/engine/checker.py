@@ -28,11 +28,11 @@ from dataclasses import dataclass, replace
 import mpmath
 import sympy as sp
 
-from . import bridge
-from .dimensions import UNDETERMINED, check_relation
-from .domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
-from .registry import Derivation, as_list
-from .verdict import Inconclusive, Method, Refuted, Verdict, Verified, Witness, combine
+from quasicentral.notation import bridge
+from quasicentral.notation.dimensions import UNDETERMINED, check_relation
+from quasicentral.notation.domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
+from quasicentral.engine.registry import Derivation, as_list
+from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, Verified, Witness, combine
 
 
 @dataclass(frozen=True)
@@ -349,7 +349,7 @@ def _num_str(v) -> str:
 
 def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: str, opts: Options) -> Verdict:
     """The verdict on ``printed`` against ``derivation`` (see the module docstring)."""
-    from .registry import derived
+    from quasicentral.engine.registry import derived
 
     found = [r for r in (check_relation(rel, dims) for rel in printed) if r]
     dim_problems = [r for r in found if not r.startswith(UNDETERMINED)]

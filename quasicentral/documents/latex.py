@@ -34,7 +34,7 @@ import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.printing.latex import LatexPrinter
 
-from . import symbols as S
+from quasicentral.notation import symbols as S
 
 # --- the printer ------------------------------------------------------------------------------
 
@@ -68,7 +68,7 @@ class PaperLatexPrinter(LatexPrinter):
 
     # names
     def _print_Symbol(self, expr, style="plain"):
-        from .bridge import is_jet
+        from quasicentral.notation.bridge import is_jet
 
         if is_jet(expr):
             name, order = expr.name.rsplit("_t", 1)

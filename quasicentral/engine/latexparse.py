@@ -16,8 +16,8 @@ import warnings
 import mpmath
 import sympy as sp
 
-from . import bridge
-from .catalog import Entry
+from quasicentral.notation import bridge
+from quasicentral.engine.catalog import Entry
 
 BACKENDS = ("antlr", "lark")
 
@@ -71,7 +71,7 @@ def _translate(parsed: sp.Basic, ours: sp.Basic) -> sp.Basic | None:
 
 def _agree(a: sp.Basic, b: sp.Basic, seed: int) -> bool:
     """Both sides equal at 3 random points (20 digits), each side compiled once for mpmath."""
-    from .check import _Timeout, time_limit
+    from quasicentral.engine.checker import _Timeout, time_limit
 
     a, b = bridge.to_jets(a), bridge.to_jets(b)
     syms = tuple(sorted(a.free_symbols | b.free_symbols, key=str))

@@ -18,11 +18,13 @@ from multiprocessing import get_context
 
 import sympy as sp
 
-from . import catalog, errata
-from . import symbols as S
-from .check import Options, check
-from .registry import REGISTRY, derived, load_all
-from .verdict import Refuted
+from quasicentral.engine import catalog
+
+from quasicentral.engine import errata
+from quasicentral.notation import symbols as S
+from quasicentral.engine.checker import Options, check
+from quasicentral.engine.registry import REGISTRY, derived, load_all
+from quasicentral.engine.verdict import Refuted
 
 FAST = Options(points=10, symbolic=False, certify=False)
 
@@ -148,7 +150,7 @@ def mutants_of(entry: catalog.Entry, per_entry: int | None = None) -> list[Mutan
 
 def _equivalent(mutant: list, original: list, der, result) -> bool:
     """The mutant says the same as the original: sympy proves every compared value equal."""
-    from .check import _Timeout, claims_for, symbolic_zero, time_limit
+    from quasicentral.engine.checker import _Timeout, claims_for, symbolic_zero, time_limit
 
     def residual(rel):
         return rel.lhs - rel.rhs if isinstance(rel, sp.Eq) else None

@@ -103,7 +103,7 @@ def integrate(t, R0, v0, length, g, kappa=0.0, beta=0.0, rtol=1e-12):
 
 def integrate_mp(t, R0, v0, length, g, kappa=0, beta=0, dps: int = 30):
     """(X, Y) at times ``t`` with mpmath's Taylor-series integrator at ``dps`` digits."""
-    from .quadratic import planar_segments
+    from quasicentral.models.quadratic import planar_segments
 
     with mpmath.workdps(dps + 10):
         args = [mpmath.mpf(a) for a in (R0, v0, length, g, kappa, beta)]

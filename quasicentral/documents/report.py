@@ -33,12 +33,18 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import catalog, errata as errata_mod, figures as figures_mod, output
-from .files import write_atomic
-from .latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
-from .prose import FIGURE_CAPTIONS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
-from .registry import REGISTRY, Derivation, as_list, derived, load_all
-from .verdict import Outcome, Verdict
+from quasicentral.engine import catalog
+
+from quasicentral.engine import errata as errata_mod
+
+from quasicentral.studies import figures as figures_mod
+
+from quasicentral.engine import formats as output
+from quasicentral.files import write_atomic
+from quasicentral.documents.latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
+from quasicentral.documents.prose import FIGURE_CAPTIONS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
+from quasicentral.engine.registry import REGISTRY, Derivation, as_list, derived, load_all
+from quasicentral.engine.verdict import Outcome, Verdict
 
 KINDS = ("report", "handout")
 FIGURE_DIR = "figures"
@@ -642,8 +648,8 @@ def file_names(kinds=KINDS, langs=LANGS) -> list[str]:
 
 def outcomes_for_all() -> dict[str, Outcome]:
     """Verdicts of every catalog entry (read from the verification cache when it is warm)."""
-    from . import verify
-    from .check import Options
+    from quasicentral.engine import run as verify
+    from quasicentral.engine.checker import Options
 
     entries = catalog.entries()
     return dict(zip([e.id for e in entries], verify.run(entries, Options(), use_cache=True)))

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import symbols as S
+from quasicentral.notation import symbols as S
 
 SOURCES = {
     "brepta1953": 'R. Brepta (1953), "Pohyb bodu v odporujícím prostředí — quasicentrální pohyb"',

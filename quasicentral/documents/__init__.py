@@ -1,0 +1,1 @@
+"""Documents: the LaTeX printer, prose, reports and handouts."""

@@ -1,0 +1,1 @@
+"""The engine: derivations registry, checker, verdicts, catalog, errata, the run, mutation."""

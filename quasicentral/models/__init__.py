@@ -1,0 +1,1 @@
+"""The physical models and their evaluators (double, mpmath, balls)."""

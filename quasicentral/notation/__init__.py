@@ -1,0 +1,1 @@
+"""The notation: symbols, dimensions, domains and the one sympy → numbers bridge."""

@@ -1,0 +1,1 @@
+"""Studies built on the models: charts, scenes, figures."""
