@@ -1,20 +1,6 @@
-"""Derivations of both texts, one module per section, in the texts' order.
+"""The texts shipped with quasicentral, one folder each (see FORMAT.md in this folder).
 
-Each module registers its steps with :func:`quasicentral.registry.derives`; importing
-:func:`load` imports them all.
+Each folder holds a text's ``text.toml`` (metadata and symbol table), its printed catalog, its
+errata and its derivation modules; :mod:`quasicentral.engine.texts` reads them.  A user's own
+text is a folder of the same form anywhere on disk (``quasicentral new-text DIR``).
 """
-
-import importlib
-
-MODULES = (
-    "derivations.brepta1953_s2",
-    "derivations.brepta1953_s3",
-    "derivations.brepta1953_s4",
-    "derivations.brepta1953_s5",
-    "derivations.pendulum",
-)
-
-
-def load() -> None:
-    for name in MODULES:
-        importlib.import_module(name)

@@ -41,14 +41,20 @@ def _positive_int(name: str, upper: int):
     return parse
 
 
-def build_parser() -> argparse.ArgumentParser:
-    from quasicentral.engine.catalog import SOURCES
+def _add_text_options(parser: argparse.ArgumentParser, source: bool = True) -> None:
+    """--text DIR (repeatable) and --source ID: which texts a command works on."""
+    parser.add_argument("--text", action="append", dest="texts", metavar="DIR",
+                        help="a text's folder, or a shipped text's id (repeatable; default: the shipped texts)")
+    if source:
+        parser.add_argument("--source", metavar="ID", help="only the text with this id (among those selected)")
 
+
+def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.")
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
 
     v = sub.add_parser("verify", help="verify every catalog entry (printed vs derived)")
-    v.add_argument("--source", choices=sorted(SOURCES))
+    _add_text_options(v)
     v.add_argument("--id", action="append", dest="ids", metavar="ID", help="only this entry (repeatable)")
     v.add_argument("--json", action="store_true")
     v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30,
@@ -58,13 +64,13 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--jobs", type=_positive_int("--jobs", 64), default=None, help="worker processes (default: cores)")
 
     e = sub.add_parser("errata", help="the errata found and the suspects cleared")
-    e.add_argument("--source", choices=sorted(SOURCES))
+    _add_text_options(e)
     e.add_argument("--json", action="store_true")
     e.add_argument("--no-cache", action="store_true")
 
     mu = sub.add_parser("mutate", help="seed typical typos into verified entries and measure the checker")
     mu.add_argument("--json", action="store_true")
-    mu.add_argument("--source", choices=sorted(SOURCES))
+    _add_text_options(mu)
     mu.add_argument("--per-entry", type=_positive_int("--per-entry", 50), default=None,
                     help="at most this many mutants per entry (default: all)")
 
@@ -117,6 +123,11 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
     rp.add_argument("--all", action="store_true",
                     help="every golden document: reports and handouts, English and Czech")
+    _add_text_options(rp, source=False)
+
+    nt = sub.add_parser("new-text", help="write the skeleton of a new text (a folder) that verifies at once")
+    nt.add_argument("dir", metavar="DIR", help="the new text's folder (must not exist, or be empty)")
+    nt.add_argument("--id", dest="text_id", metavar="ID", help="the text's id (default: the folder's name)")
 
     sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
     sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
@@ -124,7 +135,7 @@ def build_parser() -> argparse.ArgumentParser:
     sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
 
     c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
-    c.add_argument("--source", choices=sorted(SOURCES))
+    _add_text_options(c)
     c.add_argument("--json", action="store_true")
     return p
 
@@ -152,16 +163,31 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_UNEXPECTED
 
 
-def _selected(args):
-    from quasicentral.engine import catalog
+def _texts(args) -> list:
+    """The texts a command works on: --text folders or ids (default the shipped ones), loaded."""
+    from quasicentral.engine import texts
 
-    entries = catalog.entries(getattr(args, "source", None))
+    selected = texts.resolve(getattr(args, "texts", None))
+    source = getattr(args, "source", None)
+    if source is not None:
+        chosen = [t for t in selected if t.id == source]
+        if not chosen:
+            raise UsageError(f"--source {source}: no such text among {', '.join(t.id for t in selected)}")
+        selected = chosen
+    return texts.activate(selected)
+
+
+def _selected(args):
+    from quasicentral.engine import texts
+
+    selected = _texts(args)
+    entries = texts.entries(selected)
     ids = getattr(args, "ids", None)
     if ids:
-        known = catalog.load()
+        known = {e.id for e in entries}
         for i in ids:
             if i not in known:
-                raise UsageError(f"unknown equation id {i!r}")
+                raise UsageError(f"--id {i}: no such entry in {', '.join(t.id for t in selected)}")
         entries = [e for e in entries if e.id in set(ids)]
     return entries
 
@@ -208,7 +234,7 @@ def _errata(args) -> int:
 def _mutate(args) -> int:
     from quasicentral.engine import mutate
 
-    res = mutate.run(source=args.source, per_entry=args.per_entry)
+    res = mutate.run(_texts(args), per_entry=args.per_entry)
     if args.json:
         print(json.dumps(res, indent=2, ensure_ascii=False))
     else:
@@ -504,7 +530,20 @@ def _charts(args) -> int:
     return EXIT_OK
 
 
-_COMMANDS = {"charts": _charts, "scene": _scene, "report": _report, "figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
+def _new_text(args) -> int:
+    from quasicentral.engine import skeleton
+
+    try:
+        paths = skeleton.write(Path(args.dir), args.text_id)
+    except skeleton.SkeletonError as exc:
+        raise UsageError(str(exc)) from None
+    for p in paths:
+        print(p)
+    print(f"next: quasicentral verify --text {args.dir}", file=sys.stderr)
+    return EXIT_OK
+
+
+_COMMANDS = {"new-text": _new_text, "charts": _charts, "scene": _scene, "report": _report, "figures": _figures, "trajectory": _trajectory, "verify": _verify, "errata": _errata, "mutate": _mutate, "catalog": _catalog, "period": _period}
 
 
 def finite_float(text: str, name: str) -> float:

@@ -6,11 +6,16 @@ import random
 import mpmath
 import sympy as sp
 
-from derivations import brepta1953_s3 as s3
-from quasicentral.engine.registry import derived, load_all
-from quasicentral.notation.symbols import C1, C2, C3, C4, D, R, S, g, l, m, phi, psi, rho, t
+from derivations.brepta1953 import s3 as s3
+from quasicentral.engine import texts
+from quasicentral.engine.registry import derived
+from quasicentral.notation.symbols import D
+from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 
-load_all()
+S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
+C1, C2, C3, C4, R, S, g, l, m, phi, psi, rho, t = S_("C1 C2 C3 C4 R S g l m phi psi rho t")
+
+texts.active()
 
 
 def _value(expr, seed=1, **fixed):

@@ -3,14 +3,15 @@
 import pytest
 import sympy as sp
 
+from quasicentral.engine import texts
 from quasicentral.engine import catalog
 
 from quasicentral.engine import errata
 from quasicentral.engine.catalog import CatalogError, load_file
 from quasicentral.notation.dimensions import UNDETERMINED, check_relation
-from quasicentral.engine.registry import REGISTRY, load_all
+from quasicentral.engine.registry import REGISTRY
 
-ENTRIES = catalog.entries()
+ENTRIES = texts.entries(texts.active())
 IDS = [e.id for e in ENTRIES]
 
 
@@ -31,7 +32,7 @@ def test_ids_are_unique_and_labelled():
 
 @pytest.mark.parametrize("eid", IDS)
 def test_transcription_parses(eid):
-    e = catalog.get(eid)
+    e = texts.entry(eid)
     for rel in e.relations():
         assert isinstance(rel, sp.Basic)
         assert rel not in (sp.true, sp.false), "a transcription must not collapse to True/False"
@@ -42,10 +43,10 @@ def test_transcription_parses(eid):
 def test_dimensions(eid):
     """Every entry is dimensionally consistent, unless it is a registered erratum (a printed
     equation that mixes units is an error in print, and must be recorded as one)."""
-    e = catalog.get(eid)
+    e = texts.entry(eid)
     problems = [p for p in (check_relation(r, e.dims) for r in e.relations()) if p]
     assert not any(p.startswith(UNDETERMINED) for p in problems), f"a dimension is not declared: {problems}"
-    errs, _ = errata.load()
+    errs, _ = texts.records()
     if problems:
         assert eid in errs, f"dimensionally inconsistent and not a registered erratum: {problems}"
     if eid in errs:
@@ -55,7 +56,7 @@ def test_dimensions(eid):
 
 
 def test_every_entry_has_a_derivation():
-    load_all()
+    texts.active()
     missing = [i for i in IDS if i not in REGISTRY]
     assert not missing
     stray = [i for i in REGISTRY if i not in set(IDS)]
@@ -66,11 +67,12 @@ def test_malformed_file_is_refused(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text('source = "brepta1953"\nsection = "2"\n[[equation]]\nid = "brepta1953:x"\nname = "x"\n'
                    "latex = 'x'\nprinted = 'Eq(x, nosuchname)'\n")
-    with pytest.raises(CatalogError, match="cannot read transcription"):
-        load_file(bad)[0].printed
+    table = texts.get("brepta1953").symbols
+    with pytest.raises(CatalogError, match=r"bad.toml:7: brepta1953:x: unknown name nosuchname"):
+        load_file(bad, "brepta1953", table)
     bad.write_text('source = "brepta1953"\nsection = "2"\n[[equation]]\nid = "brepta1953:x"\nname = "x"\n')
     with pytest.raises(CatalogError, match="lacks"):
-        load_file(bad)
+        load_file(bad, "brepta1953", table)
     bad.write_text("source = [")
     with pytest.raises(CatalogError):
-        load_file(bad)
+        load_file(bad, "brepta1953", table)

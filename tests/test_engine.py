@@ -4,11 +4,17 @@ import mpmath
 import pytest
 import sympy as sp
 
+from quasicentral.engine import texts
 from quasicentral.notation import bridge
-from quasicentral.engine.checker import Claim, Options, _ftc_zero, numeric, symbolic_zero, time_limit
+from quasicentral.engine.checker import Claim, Options, _ftc_zero, numeric, symbolic_zero
+from quasicentral.notation.timelimit import time_limit
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import RegistryError, derives
-from quasicentral.notation.symbols import Fj, Kc, g, k, l, t, zeta
+from quasicentral.notation.symbols import Fj, Kc
+from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
+
+TABLE = S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
+g, k, l, t, zeta = S_("g k l t zeta")
 from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verified, Witness, combine
 
 OPTS = Options(points=12)
@@ -60,21 +66,21 @@ def test_registry_refuses_duplicates_and_missing_docstrings(scratch_registry):
 
 def test_numeric_verifies_identity_and_refutes_typo():
     dom = Domain()
-    ok = numeric(Claim(sp.sin(2 * t) , 2 * sp.sin(t) * sp.cos(t), "v"), dom, "id", OPTS)
+    ok = numeric(Claim(sp.sin(2 * t) , 2 * sp.sin(t) * sp.cos(t), "v"), dom, "id", OPTS, TABLE)
     assert isinstance(ok, Verified) and ok.points >= 10
-    bad = numeric(Claim(sp.sin(2 * t), 2 * sp.sin(t) * sp.cos(t) + sp.Rational(1, 10**12), "v"), dom, "id", OPTS)
+    bad = numeric(Claim(sp.sin(2 * t), 2 * sp.sin(t) * sp.cos(t) + sp.Rational(1, 10**12), "v"), dom, "id", OPTS, TABLE)
     assert isinstance(bad, Refuted), "a difference of 1e-12 is far above 60-digit noise"
     assert bad.witness.digits == 2 * OPTS.dps
 
 
 def test_numeric_is_inconclusive_without_a_domain():
     odd = sp.Symbol("nowhere")
-    v = numeric(Claim(odd, odd, "v"), Domain(), "id", OPTS)
+    v = numeric(Claim(odd, odd, "v"), Domain(), "id", OPTS, TABLE)
     assert isinstance(v, Inconclusive) and "nowhere" in v.detail
 
 
 def test_refutation_is_certified_with_balls():
-    v = numeric(Claim(sp.sqrt(g / l), sp.sqrt(l / g), "v"), Domain(), "id", OPTS)
+    v = numeric(Claim(sp.sqrt(g / l), sp.sqrt(l / g), "v"), Domain(), "id", OPTS, TABLE)
     assert isinstance(v, Refuted) and v.witness.certified and v.method is Method.CERTIFIED
 
 
@@ -106,11 +112,11 @@ def test_dimensional_inconsistency_refutes_even_when_the_comparison_cannot_be_se
         """A derivation that fails."""
         raise RuntimeError("no")
 
-    dims = catalog.get("pendulum:53").dims
+    dims = texts.entry("pendulum:53").dims
     wrong, right = sp.Eq(l**2, g * t**2), sp.Eq(l, g * t**2)
-    v = check([wrong], dims, REGISTRY["test:fails"], "test:fails", OPTS)
+    v = check([wrong], dims, REGISTRY["test:fails"], "test:fails", OPTS, TABLE)
     assert isinstance(v, Refuted) and v.method is Method.DIMENSIONAL and "derivation failed" in v.detail
-    v = check([right], dims, REGISTRY["test:fails"], "test:fails", OPTS)
+    v = check([right], dims, REGISTRY["test:fails"], "test:fails", OPTS, TABLE)
     assert isinstance(v, Inconclusive) and "derivation failed" in v.detail
 
 
@@ -127,7 +133,7 @@ def test_precision_is_local():
     import flint
 
     before, fbefore = mpmath.mp.dps, flint.ctx.prec
-    numeric(Claim(Kc(k), sp.pi / 2 * sp.hyper([sp.S.Half, sp.S.Half], [1], k**2), "K"), Domain(), "K", OPTS)
+    numeric(Claim(Kc(k), sp.pi / 2 * sp.hyper([sp.S.Half, sp.S.Half], [1], k**2), "K"), Domain(), "K", OPTS, TABLE)
     bridge.arb_eval(Kc(k), {k: sp.Rational(1, 3)}, prec=300)
     assert mpmath.mp.dps == before and flint.ctx.prec == fbefore
 
@@ -157,5 +163,5 @@ def test_values_beyond_the_double_range_are_compared_exactly():
     """factorial(n²) against factorial(n): ~1e2400 must not overflow into a false agreement."""
     n_ = sp.Symbol("n_", positive=True)
     dom = Domain.of(ranges={n_: (20, 40)})
-    v = numeric(Claim(sp.factorial(sp.floor(n_) ** 2), sp.factorial(sp.floor(n_)), "v"), dom, "big", OPTS)
+    v = numeric(Claim(sp.factorial(sp.floor(n_) ** 2), sp.factorial(sp.floor(n_)), "v"), dom, "big", OPTS, TABLE)
     assert isinstance(v, Refuted)

@@ -4,10 +4,14 @@ the unmutated catalog must raise no alarm."""
 import pytest
 import sympy as sp
 
+from quasicentral.engine import texts
 from quasicentral.engine import catalog
 
 from quasicentral.engine import mutate
-from quasicentral.notation.symbols import k, t, x
+from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
+
+S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
+k, t, x = S_("k t x")
 
 
 def test_operators_produce_the_typical_typos():
@@ -21,7 +25,7 @@ def test_recall_and_false_alarms_on_the_catalog():
     """At most 3 mutants per verified entry (spread over the operators), for every entry whose
     printed form has no integral (each mutant of an integral costs seconds of quadrature); every
     mutant of every entry runs as `quasicentral mutate` and in the slow test below."""
-    ids = [i for i in mutate.verified_entries() if not catalog.get(i).printed.has(sp.Integral)]
+    ids = [i for i in mutate.verified_entries() if not texts.entry(i).printed.has(sp.Integral)]
     res = mutate.run(per_entry=3, ids=ids)
     assert res["entries"] > 120 and res["mutants"] > 300
     assert res["false_alarms"] == 0, res["false_alarm_entries"]

@@ -9,10 +9,14 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derivations import pendulum as P
+from derivations.pendulum import exact_period as P
+from quasicentral.engine import texts
 from quasicentral.engine import catalog
 from quasicentral.engine.registry import derived
-from quasicentral.notation.symbols import Tper, g, l, n, phi0, w
+from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
+
+S_ = symbols_of(SHIPPED_ROOT / "pendulum" / "text.toml")
+Tper, g, l, n, phi0, w = S_("T g l n phi0 w")
 
 G, LEN = 9.81, 0.75  # any values: T scales as sqrt(l/g)
 AMPLITUDES_DEG = (1, 10, 45, 90, 135, 170)
@@ -54,7 +58,7 @@ def _integrate_eom(amp_deg):
 
 
 def _printed(eid):
-    return catalog.get(eid).relations()
+    return texts.entry(eid).relations()
 
 
 @pytest.mark.parametrize("amp", AMPLITUDES_DEG)

@@ -26,6 +26,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
+from quasicentral.engine import texts
 from quasicentral import files
 
 from quasicentral.engine import catalog
@@ -84,8 +85,8 @@ def _balanced(row: str) -> bool:
 
 
 def _all_printed_latex():
-    errs, _ = errata.load()
-    out = [(e.id, e.latex) for e in catalog.entries()]
+    errs, _ = texts.records()
+    out = [(e.id, e.latex) for e in texts.entries(texts.active())]
     out += [(i + "/corrected", r.corrected_latex) for i, r in errs.items()]
     return out
 
@@ -107,12 +108,12 @@ _ALLOWED = set("áéíóúýčďěňřšťůžÁÉÍÓÚÝČĎĚŇŘŠŤŮŽ")
 
 
 def _prose():
-    from quasicentral.engine.registry import REGISTRY, load_all
+    from quasicentral.engine.registry import REGISTRY
 
-    load_all()
-    errs, cleared = errata.load()
+    texts.active()
+    errs, cleared = texts.records()
     out = [d.doc for d in REGISTRY.values()] + [r.note for r in errs.values()]
-    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for e in catalog.entries()]
+    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for e in texts.entries(texts.active())]
     return out
 
 

@@ -4,6 +4,7 @@ import mpmath
 import pytest
 import sympy as sp
 
+from quasicentral.engine import texts
 from quasicentral.notation import bridge
 
 from quasicentral.engine import catalog
@@ -11,11 +12,11 @@ from quasicentral.engine import catalog
 from quasicentral.engine import errata
 from quasicentral.engine.checker import claims_for
 from quasicentral.notation.domain import substitute_definitions
-from quasicentral.engine.registry import REGISTRY, derived, load_all
+from quasicentral.engine.registry import REGISTRY, derived
 from quasicentral.engine.verdict import Method, Refuted, Verified
 
-IDS = [e.id for e in catalog.entries()]
-ERRATA, CLEARED = errata.load()
+IDS = [e.id for e in texts.entries(texts.active())]
+ERRATA, CLEARED = texts.records()
 
 
 @pytest.mark.parametrize("eid", IDS)
@@ -42,10 +43,10 @@ def test_witness_reproduces(eid, outcomes):
     if w is None:
         assert outcomes[eid].verdict.method is Method.DIMENSIONAL
         return
-    load_all()
+    texts.active()
     der = REGISTRY[eid]
-    defs = der.domain.definition_map()
-    for claim in claims_for(catalog.get(eid).relations(), der, derived(eid)):
+    defs = der.domain.definition_map(texts.entry(eid).symbols)
+    for claim in claims_for(texts.entry(eid).relations(), der, derived(eid)):
         if claim.quantity != w.quantity:
             continue
         p = bridge.to_jets(substitute_definitions(claim.printed, defs))

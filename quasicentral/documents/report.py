@@ -33,17 +33,15 @@ from pathlib import Path
 
 import sympy as sp
 
-from quasicentral.engine import catalog
-
+from quasicentral.engine import catalog, texts
 from quasicentral.engine import errata as errata_mod
-
 from quasicentral.studies import figures as figures_mod
 
 from quasicentral.engine import formats as output
 from quasicentral.files import write_atomic
 from quasicentral.documents.latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
 from quasicentral.documents.prose import FIGURE_CAPTIONS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
-from quasicentral.engine.registry import REGISTRY, Derivation, as_list, derived, load_all
+from quasicentral.engine.registry import REGISTRY, Derivation, as_list, derived
 from quasicentral.engine.verdict import Outcome, Verdict
 
 KINDS = ("report", "handout")
@@ -95,10 +93,10 @@ def label_of(eid: str) -> str:
 
 def steps_of(source: str, outcomes: dict[str, Outcome]) -> list[Step]:
     """The steps of one text in catalog order, each with its (memoized) derivation result."""
-    load_all()
-    errs, cleared = errata_mod.load()
+    text = texts.get(source)
+    errs, cleared = text.errata, text.cleared
     out = []
-    for e in catalog.entries(source):
+    for e in text.entries.values():
         d = REGISTRY.get(e.id)
         result, error = None, ""
         if d is None:
@@ -129,11 +127,10 @@ def section_titles() -> dict[tuple[str, str], str]:
     import tomllib
 
     out = {}
-    root = catalog._catalog_root()
-    for source in catalog.SOURCES:
-        for path in sorted((root / source).glob("*.toml")):
+    for text in texts.active():
+        for path in text.catalog_files:
             data = tomllib.loads(path.read_text(encoding="utf-8"))
-            out[(data["source"], str(data["section"]))] = data.get("title", "")
+            out[(text.id, str(data["section"]))] = data.get("title", "")
     return out
 
 
@@ -167,7 +164,8 @@ def figure_items() -> tuple[FigureItem, ...]:
         src = getattr(fig, "source", None) or FIGURE_SOURCES.get(fig.name)
         if src is None and getattr(fig, "kind", "") == "period":
             src = "pendulum"
-        sources = (src,) if src in catalog.SOURCES else tuple(catalog.SOURCES)
+        ids = tuple(t.id for t in texts.active())
+        sources = (src,) if src in ids else ids
         items.append(FigureItem(fig.name, fig.title, sources, make))
     return tuple(items)
 
@@ -643,7 +641,7 @@ def _solution(ex: Exercise, lang: str) -> str:
 # --- generating and writing ------------------------------------------------------------------
 def file_names(kinds=KINDS, langs=LANGS) -> list[str]:
     """The .tex files that :func:`generate` writes for these kinds and languages."""
-    return [f"{source}-{kind}-{lang}.tex" for kind in kinds for lang in langs for source in catalog.SOURCES]
+    return [f"{t.id}-{kind}-{lang}.tex" for kind in kinds for lang in langs for t in texts.active()]
 
 
 def outcomes_for_all() -> dict[str, Outcome]:
@@ -651,7 +649,7 @@ def outcomes_for_all() -> dict[str, Outcome]:
     from quasicentral.engine import run as verify
     from quasicentral.engine.checker import Options
 
-    entries = catalog.entries()
+    entries = texts.entries(texts.active())
     return dict(zip([e.id for e in entries], verify.run(entries, Options(), use_cache=True)))
 
 
@@ -659,7 +657,7 @@ def generate(kinds=("report",), langs=("en",), outcomes: dict[str, Outcome] | No
     """File name → LaTeX source of every document asked for, plus ``versions.tex``."""
     outcomes = outcomes if outcomes is not None else outcomes_for_all()
     docs: dict[str, str] = {}
-    for source in catalog.SOURCES:
+    for source in [t.id for t in texts.active()]:
         steps = steps_of(source, outcomes)
         for kind in kinds:
             for lang in langs:

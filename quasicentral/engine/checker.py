@@ -20,9 +20,6 @@ A *claim* is a pair of expressions that should be equal on the declared domain. 
 from __future__ import annotations
 
 import math
-import signal
-import threading
-from contextlib import contextmanager
 from dataclasses import dataclass, replace
 
 import mpmath
@@ -31,7 +28,9 @@ import sympy as sp
 from quasicentral.notation import bridge
 from quasicentral.notation.dimensions import UNDETERMINED, check_relation
 from quasicentral.notation.domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
-from quasicentral.engine.registry import Derivation, as_list
+from quasicentral.engine.registry import Derivation, Mode, as_list
+from quasicentral.notation.symbols import SymbolTable
+from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, Verified, Witness, combine
 
 
@@ -63,31 +62,6 @@ class Claim:
     scale: sp.Expr | None = None  # magnitude the difference is measured against
 
 
-class _Timeout(BaseException):  # BaseException: sympy's `except Exception` cannot swallow it
-    pass
-
-
-@contextmanager
-def time_limit(seconds: float):
-    """Bound a block's *CPU* time (SIGVTALRM; main thread only, elsewhere unbounded).  CPU time,
-    not wall time: the same check reaches the same verdict on a busy machine as on an idle one,
-    so verdicts and the reports built from them do not depend on the load."""
-    if seconds <= 0 or threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def handler(signum, frame):
-        raise _Timeout()
-
-    old = signal.signal(signal.SIGVTALRM, handler)
-    signal.setitimer(signal.ITIMER_VIRTUAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_VIRTUAL, 0)
-        signal.signal(signal.SIGVTALRM, old)
-
-
 # --- building claims ----------------------------------------------------------------------
 def _doit_derivatives(e):
     return e.replace(lambda a: isinstance(a, sp.Derivative), lambda a: a.doit())
@@ -111,16 +85,21 @@ def _solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
     return sp.cancel(-expr.xreplace({dummy: 0}) / coeff) if coeff.is_polynomial() else -expr.xreplace({dummy: 0}) / coeff
 
 
-def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[Claim] | str:
-    """Pair the printed relations with the derivation's result; a string is a reason why not."""
+class CannotCompare(Exception):
+    """The printed relations cannot be paired with the derivation's result (the reason)."""
+
+
+def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[Claim]:
+    """Pair the printed relations with the derivation's result; :class:`CannotCompare` says
+    why they cannot be."""
     mode = derivation.mode
-    if mode == "condition":
+    if mode is Mode.CONDITION:
         if not all(isinstance(r, sp.Eq) for r in printed):
-            return "a condition is an equation"
+            raise CannotCompare("a condition is an equation")
         cond = {r.lhs: r.rhs for r in printed}
         q = _doit_derivatives(result)
         return [Claim(q.subs(cond), sp.Integer(0), f"{sp.sstr(q)} under the condition", sp.Abs(q))]
-    if mode == "substitute":
+    if mode is Mode.SUBSTITUTE:
         model = dict(result or {})
         out = []
         for rel in printed:
@@ -130,25 +109,25 @@ def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[
                 out.append(Claim(lhs - rhs, sp.Integer(0), "lhs - rhs on the derived solution",
                                  sp.Abs(lhs) + sp.Abs(rhs)))
             elif isinstance(rel, sp.Basic) and rel in (sp.true, sp.false):
-                return f"printed relation evaluates to {rel}"
+                raise CannotCompare(f"printed relation evaluates to {rel}")
             else:
                 out.append(Claim(_doit_derivatives(rel.subs(model)), sp.Integer(0), "expression on the derived solution"))
         return out
     derived = [_doit_derivatives(d) if isinstance(d, sp.Basic) else d for d in as_list(result)]
     printed = [_doit_derivatives(p) for p in printed]
     if len(derived) != len(printed):
-        return f"printed has {len(printed)} relation(s), derivation gives {len(derived)}"
-    if mode == "expression":
+        raise CannotCompare(f"printed has {len(printed)} relation(s), derivation gives {len(derived)}")
+    if mode is Mode.EXPRESSION:
         return [Claim(p, d, "value") for p, d in zip(printed, derived)]
     out = []
     unknowns = derivation.unknowns or tuple(d.lhs for d in derived)
     for p, d, unk in zip(printed, derived, unknowns):
         unk = _doit_derivatives(unk)
         if p in (sp.true, sp.false):
-            return f"printed relation evaluates to {p}"
+            raise CannotCompare(f"printed relation evaluates to {p}")
         pv, dv = _solve_for(p, unk), _solve_for(d, unk)
         if dv is None:
-            return f"cannot solve the derived relation for {sp.sstr(unk)}"
+            raise CannotCompare(f"cannot solve the derived relation for {sp.sstr(unk)}")
         if pv is not None:
             out.append(Claim(pv, dv, sp.sstr(unk)))
         elif isinstance(p, sp.Eq):
@@ -158,7 +137,7 @@ def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[
             out.append(Claim(lhs - rhs, sp.Integer(0), f"printed lhs - rhs where {sp.sstr(unk)} is derived",
                              sp.Abs(lhs) + sp.Abs(rhs)))
         else:
-            return f"the printed entry is not an equation for {sp.sstr(unk)}"
+            raise CannotCompare(f"the printed entry is not an equation for {sp.sstr(unk)}")
     return out
 
 
@@ -175,7 +154,7 @@ def symbolic_zero(diff: sp.Expr, seconds: float, force: bool = True) -> bool:
             if diff.has(sp.Integral):  # simplify cannot see through an integral: differentiate it
                 return _ftc_zero(diff, force)
             return sp.simplify(diff, doit=False) == 0 or (force and _forced_zero(diff))
-    except _Timeout:
+    except TimeLimitExceeded:
         return False
     except Exception:  # noqa: BLE001 - a CAS failure proves nothing
         return False
@@ -213,8 +192,8 @@ def _jet_ranges(syms) -> dict:
 _DERIVED_VALUES: dict = {}
 
 
-def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
-    defs = domain.definition_map()
+def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: SymbolTable) -> Verdict:
+    defs = domain.definition_map(table)
     p = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.printed, defs)))
     d = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.derived, defs)))
     scale = (bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.scale, defs)))
@@ -223,7 +202,7 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
     try:
         # a quadrature per point and rung costs ~100× a closed form: integrals get 12 points
         count = min(opts.points, 12) if (p.has(sp.Integral) or d.has(sp.Integral)) else opts.points
-        pts = Sampler(domain, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(count)
+        pts = Sampler(domain, table, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(count)
     except KeyError as exc:
         return Inconclusive(Method.NONE, f"{exc.args[0]}")
     if len(pts) < max(3, count // 2):
@@ -347,7 +326,8 @@ def _num_str(v) -> str:
     return mpmath.nstr(v, 25)
 
 
-def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: str, opts: Options) -> Verdict:
+def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: str, opts: Options,
+          table: SymbolTable) -> Verdict:
     """The verdict on ``printed`` against ``derivation`` (see the module docstring)."""
     from quasicentral.engine.registry import derived
 
@@ -369,20 +349,20 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
     try:
         with time_limit(opts.symbolic_seconds):
             claims = claims_for(printed, derivation, result)
-    except _Timeout:
-        claims = f"cannot set up the comparison: sympy did not solve the relation within {opts.symbolic_seconds} s"
+    except CannotCompare as exc:
+        return unsettled(str(exc))
+    except TimeLimitExceeded:
+        return unsettled(f"cannot set up the comparison: sympy did not solve the relation within {opts.symbolic_seconds} s")
     except Exception as exc:  # noqa: BLE001 - a relation sympy cannot solve is inconclusive
-        claims = f"cannot set up the comparison: {type(exc).__name__}: {exc}"[:300]
-    if isinstance(claims, str):
-        return unsettled(claims)
+        return unsettled(f"cannot set up the comparison: {type(exc).__name__}: {exc}"[:300])
     verdicts = []
-    defs = derivation.domain.definition_map()
+    defs = derivation.domain.definition_map(table)
     for i, claim in enumerate(claims):
         # Every claim is checked at every point; the symbolic stage (bounded in CPU time) then
         # tries to prove what the numbers found equal — where they found a difference no
         # simplification can return 0, and the bound is not spent.  A proof the numbers
         # contradict is not trusted (a CAS slip, or a rewrite that holds on part of the domain).
-        v = numeric(claim, derivation.domain, f"{label}#{i}", opts)
+        v = numeric(claim, derivation.domain, f"{label}#{i}", opts, table)
         if opts.symbolic and not isinstance(v, Refuted) and symbolic_zero(
                 substitute_definitions(claim.printed - claim.derived, defs), opts.symbolic_seconds):
             if isinstance(v, Verified):

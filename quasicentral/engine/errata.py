@@ -1,6 +1,6 @@
 """Errata and cleared suspects: the toolkit's findings, kept as records and tested both ways.
 
-``data/errata/*.toml`` (one file per section) hold, for each erratum, the corrected transcription (which must verify)
+A text's ``errata/*.toml`` files hold, for each erratum, the corrected transcription (which must verify)
 and its kind; the printed form must be refuted.  A *cleared* record names a suspicion that
 the checker settled in the paper's favour: the printed form must verify — or, where the
 entry is an erratum for another reason, its correction (which keeps the suspected detail as
@@ -10,14 +10,14 @@ printed) must verify.  If an expectation fails, verification reports the entry a
 from __future__ import annotations
 
 import tomllib
-from dataclasses import dataclass
-from functools import cached_property, lru_cache
-from importlib import resources
+from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import sympy as sp
 
-from quasicentral.engine.catalog import CatalogError, load as load_catalog, parse_transcription
+from quasicentral.engine.catalog import CatalogError, Entry, parse_transcription, read_toml, where
+from quasicentral.notation.symbols import SymbolError, SymbolTable
 
 KINDS = ("sign", "exponent", "wrong variable", "missing factor", "limits of integration",
          "range of validity", "OCR glyph", "derivative order", "parenthesis", "coefficient")
@@ -30,10 +30,12 @@ class Erratum:
     corrected_text: str
     corrected_latex: str
     note: str
+    file: str = ""
+    symbols: SymbolTable | None = field(default=None, compare=False, repr=False)
 
     @cached_property
     def corrected(self) -> sp.Basic:
-        return parse_transcription(self.corrected_text, f"errata.toml: {self.id}")
+        return parse_transcription(self.corrected_text, self.symbols, f"{self.file}: {self.id}")
 
     def relations(self) -> list[sp.Basic]:
         c = self.corrected
@@ -47,42 +49,40 @@ class Cleared:
     note: str
 
 
-def _root() -> Path:
-    return Path(str(resources.files("quasicentral") / "data" / "errata"))
-
-
-@lru_cache(maxsize=None)
-def load(root: str | None = None) -> tuple[dict[str, Erratum], dict[str, Cleared]]:
+def load(paths: list[Path], catalog: dict[str, Entry], table: SymbolTable) -> tuple[dict[str, Erratum], dict[str, Cleared]]:
+    """The errata and cleared suspects of one text (its ``errata/*.toml`` files, in order)."""
     errata: dict[str, Erratum] = {}
     cleared: dict[str, Cleared] = {}
-    for p in sorted((Path(root) if root else _root()).glob("*.toml")):
-        _load_file(p, errata, cleared)
+    for p in paths:
+        _load_file(p, errata, cleared, catalog, table)
     return errata, cleared
 
 
-def _load_file(p: Path, errata: dict, cleared: dict) -> None:
-    try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except (OSError, tomllib.TOMLDecodeError) as exc:
-        raise CatalogError(f"{p.name}: {exc}") from None
-    catalog = load_catalog()
+def _load_file(p: Path, errata: dict, cleared: dict, catalog: dict[str, Entry], table: SymbolTable) -> None:
+    data = read_toml(p)
     for raw in data.get("erratum", []):
+        here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
         missing = [k for k in ("id", "kind", "corrected", "corrected_latex", "note") if k not in raw]
         if missing:
-            raise CatalogError(f"{p.name}: erratum {raw.get('id', '?')} lacks {', '.join(missing)}")
+            raise CatalogError(f"{here}: erratum {raw.get('id', '?')} lacks {', '.join(missing)}")
         if raw["id"] not in catalog:
-            raise CatalogError(f"{p.name}: erratum for unknown id {raw['id']!r}")
+            raise CatalogError(f"{here}: erratum for unknown id {raw['id']!r}")
         if raw["kind"] not in KINDS:
-            raise CatalogError(f"{p.name}: {raw['id']}: unknown kind {raw['kind']!r}")
+            raise CatalogError(f"{here}: {raw['id']}: unknown kind {raw['kind']!r} (one of: {', '.join(KINDS)})")
         if raw["id"] in errata or raw["id"] in cleared:
-            raise CatalogError(f"{p.name}: duplicate erratum {raw['id']!r}")
+            raise CatalogError(f"{here}: duplicate erratum {raw['id']!r}")
+        try:
+            table.check_names(raw["corrected"])
+        except SymbolError as exc:
+            raise CatalogError(f"{here}: {raw['id']}: corrected: {exc}") from None
         errata[raw["id"]] = Erratum(raw["id"], raw["kind"], raw["corrected"].strip(),
-                                    raw["corrected_latex"].strip(), raw["note"].strip())
+                                    raw["corrected_latex"].strip(), raw["note"].strip(), p.name, table)
     for raw in data.get("cleared", []):
+        here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
         if raw.get("id") not in catalog:
-            raise CatalogError(f"{p.name}: cleared suspect for unknown id {raw.get('id')!r}")
+            raise CatalogError(f"{here}: cleared suspect for unknown id {raw.get('id')!r}")
         if raw["id"] in cleared:
-            raise CatalogError(f"{p.name}: {raw['id']!r} cleared twice")
+            raise CatalogError(f"{here}: {raw['id']!r} cleared twice")
         if "suspicion" not in raw or "note" not in raw:
-            raise CatalogError(f"{p.name}: cleared {raw['id']} needs 'suspicion' and 'note'")
+            raise CatalogError(f"{here}: cleared {raw['id']} needs 'suspicion' and 'note'")
         cleared[raw["id"]] = Cleared(raw["id"], raw["suspicion"].strip(), raw["note"].strip())

@@ -8,13 +8,13 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from quasicentral.engine import errata as errata_mod
+from quasicentral.engine import texts
 from quasicentral.engine.catalog import Entry
-from quasicentral.engine.verdict import Outcome
+from quasicentral.engine.verdict import Outcome, Status
 
 
 def _entry_head(e: Entry) -> dict:
-    return {"id": e.id, "source": e.source, "number": e.number, "name": e.name, "section": e.section}
+    return {"id": e.id, "text": e.text, "source": e.source, "number": e.number, "name": e.name, "section": e.section}
 
 
 def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
@@ -24,7 +24,7 @@ def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
     for e, o in zip(entries, outcomes):
         v = o.verdict
         row = {**_entry_head(e), "verdict": v.name, "method": v.method.value, "printed_latex": e.latex,
-               "erratum": o.erratum, "status": o.status, "detail": v.detail, "dimensions": v.dimensions,
+               "erratum": o.erratum, "status": o.status.value, "detail": v.detail, "dimensions": v.dimensions,
                "points": v.points, "digits": list(v.digits)}
         w = getattr(v, "witness", None)
         row["witness"] = _witness_json(w) if w else None
@@ -43,16 +43,17 @@ def _witness_json(w) -> dict:
 
 
 def errata_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
-    errs, cleared = errata_mod.load()
     out_e, out_c = [], []
     for e, o in zip(entries, outcomes):
+        text = texts.text_of(e.id)
+        errs, cleared = text.errata, text.cleared
         if e.id in errs:
             rec = errs[e.id]
             w = getattr(o.verdict, "witness", None)
             out_e.append({**_entry_head(e), "kind": rec.kind, "printed_latex": e.latex,
                           "corrected_latex": rec.corrected_latex,
                           "witness": _witness_json(w) if w else _dimensional_witness(o),
-                          "note": rec.note, "status": o.status,
+                          "note": rec.note, "status": o.status.value,
                           "evidence": o.verdict.detail, "method": o.verdict.method.value})
         if e.id in cleared:
             rec = cleared[e.id]
@@ -61,7 +62,7 @@ def errata_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
             out_c.append({**_entry_head(e), "kind": "cleared", "suspicion": rec.suspicion,
                           "printed_latex": e.latex,
                           "corrected_latex": errs[e.id].corrected_latex if e.id in errs else e.latex,
-                          "witness": None, "note": rec.note, "status": o.status,
+                          "witness": None, "note": rec.note, "status": o.status.value,
                           "evidence": (("the correction keeps it and is " if e.id in errs else "")
                                        + f"{v.name} ({v.method.value}): {v.detail}"),
                           "method": v.method.value})
@@ -93,22 +94,20 @@ def junit_xml(entries: list[Entry], outcomes: list[Outcome]) -> str:
         by_source.setdefault(e.source, []).append((e, o))
     for source, pairs in by_source.items():
         fails = sum(1 for _, o in pairs if not o.ok)
-        skipped = sum(1 for _, o in pairs if o.ok and o.status in ("erratum", "cleared"))
         suite = ET.SubElement(suites, "testsuite", name=source, tests=str(len(pairs)), failures=str(fails),
                               errors="0", skipped="0")
         for e, o in pairs:
             case = ET.SubElement(suite, "testcase", classname=f"{source}.section{e.section}", name=e.id)
             props = ET.SubElement(case, "properties")
-            for k, val in (("status", o.status), ("verdict", o.verdict.name), ("method", o.verdict.method.value),
+            for k, val in (("status", o.status.value), ("verdict", o.verdict.name), ("method", o.verdict.method.value),
                            ("erratum", str(o.erratum).lower())):
                 ET.SubElement(props, "property", name=k, value=val)
             if not o.ok:
-                f = ET.SubElement(case, "failure", message=f"{o.status}: {o.verdict.name}", type=o.verdict.name)
+                f = ET.SubElement(case, "failure", message=f"{o.status.value}: {o.verdict.name}", type=o.verdict.name)
                 f.text = "; ".join(o.problems) or o.verdict.detail
-            elif o.status in ("erratum", "cleared"):
+            elif o.status in (Status.ERRATUM, Status.CLEARED):
                 out = ET.SubElement(case, "system-out")
-                out.text = f"{o.status}: printed form {o.verdict.name} ({o.verdict.method.value}); {o.verdict.detail}"
-        del skipped
+                out.text = f"{o.status.value}: printed form {o.verdict.name} ({o.verdict.method.value}); {o.verdict.detail}"
     ET.indent(suites)
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(suites, encoding="unicode") + "\n"
 

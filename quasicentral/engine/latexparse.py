@@ -71,7 +71,7 @@ def _translate(parsed: sp.Basic, ours: sp.Basic) -> sp.Basic | None:
 
 def _agree(a: sp.Basic, b: sp.Basic, seed: int) -> bool:
     """Both sides equal at 3 random points (20 digits), each side compiled once for mpmath."""
-    from quasicentral.engine.checker import _Timeout, time_limit
+    from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
     a, b = bridge.to_jets(a), bridge.to_jets(b)
     syms = tuple(sorted(a.free_symbols | b.free_symbols, key=str))
@@ -85,7 +85,7 @@ def _agree(a: sp.Basic, b: sp.Basic, seed: int) -> bool:
                     va, vb = fa(*vals), fb(*vals)
                     if not abs(va - vb) <= mpmath.mpf("1e-9") * max(1, abs(va), abs(vb)):
                         return False
-    except _Timeout:
+    except TimeLimitExceeded:
         return False
     except Exception:  # noqa: BLE001 - a parse that cannot be evaluated does not count
         return False

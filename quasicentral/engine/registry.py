@@ -15,27 +15,36 @@ duplicates, and says how its result is compared with the printed transcription:
   must remove).
 
 ``uses`` cites the equation ids a derivation builds on.  Results are memoized: a derivation
-may call :func:`derived` on another id.
+may call :func:`derived` on another id, and each such call is recorded
+(:func:`actually_used`), so that the declared ``uses`` can be checked against what was used.
 """
 
 from __future__ import annotations
 
 import inspect
 from dataclasses import dataclass
+from enum import Enum
 from typing import Callable
 
 import sympy as sp
 
 from quasicentral.notation.domain import Domain
 
-MODES = ("solve", "substitute", "expression", "condition")
+
+class Mode(str, Enum):
+    """How a derivation's result is compared with the printed transcription."""
+
+    SOLVE = "solve"
+    SUBSTITUTE = "substitute"
+    EXPRESSION = "expression"
+    CONDITION = "condition"
 
 
 @dataclass(frozen=True)
 class Derivation:
     id: str
     func: Callable[[], object]
-    mode: str
+    mode: Mode
     domain: Domain
     uses: tuple[str, ...]
     unknowns: tuple | None
@@ -45,20 +54,36 @@ class Derivation:
     def source(self) -> str:
         return inspect.getsource(self.func)
 
+    @property
+    def text(self) -> str:
+        """The id of the text the derivation belongs to (its id's prefix)."""
+        return self.id.split(":", 1)[0]
+
+    def where(self) -> str:
+        """``file:line`` of the derivation's function, for messages."""
+        try:
+            return f"{inspect.getsourcefile(self.func)}:{inspect.getsourcelines(self.func)[1]}"
+        except (OSError, TypeError):
+            return self.module
+
 
 REGISTRY: dict[str, Derivation] = {}
 _MEMO: dict[str, object] = {}
+_USED: dict[str, set[str]] = {}
+_STACK: list[str] = []
 
 
 class RegistryError(ValueError):
     pass
 
 
-def derives(eid: str, *, mode: str = "solve", domain: Domain | None = None, uses: tuple[str, ...] = (),
+def derives(eid: str, *, mode: Mode | str = Mode.SOLVE, domain: Domain | None = None, uses: tuple[str, ...] = (),
             unknowns: tuple | None = None):
     """Register the decorated function as the derivation of catalog entry ``eid``."""
-    if mode not in MODES:
-        raise RegistryError(f"{eid}: unknown mode {mode!r}")
+    try:
+        mode = Mode(mode)
+    except ValueError:
+        raise RegistryError(f"{eid}: unknown mode {mode!r} (one of: {', '.join(m.value for m in Mode)})") from None
 
     def deco(func):
         if eid in REGISTRY:
@@ -74,19 +99,31 @@ def derives(eid: str, *, mode: str = "solve", domain: Domain | None = None, uses
 
 def derived(eid: str):
     """The (memoized) result of the derivation of ``eid``."""
+    if _STACK:
+        _USED.setdefault(_STACK[-1], set()).add(eid)
     if eid not in _MEMO:
         if eid not in REGISTRY:
             raise RegistryError(f"no derivation registered for {eid!r}")
-        _MEMO[eid] = REGISTRY[eid].func()
+        _STACK.append(eid)
+        try:
+            _MEMO[eid] = REGISTRY[eid].func()
+        finally:
+            _STACK.pop()
     return _MEMO[eid]
 
 
-def load_all() -> dict[str, Derivation]:
-    """Import every derivation module (they register themselves)."""
-    import derivations  # noqa: F401
+def actually_used(eid: str) -> frozenset[str]:
+    """The ids whose results the derivation of ``eid`` asked for (after it has run)."""
+    derived(eid)
+    return frozenset(_USED.get(eid, ()))
 
-    derivations.load()
-    return REGISTRY
+
+def unregister(prefix: str) -> None:
+    """Forget every derivation of the text ``prefix`` (before its modules are imported anew)."""
+    for eid in [e for e in REGISTRY if e.split(":", 1)[0] == prefix]:
+        REGISTRY.pop(eid)
+        _MEMO.pop(eid, None)
+        _USED.pop(eid, None)
 
 
 def as_list(obj) -> list:

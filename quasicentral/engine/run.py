@@ -17,15 +17,13 @@ from dataclasses import asdict
 from multiprocessing import get_context
 from pathlib import Path
 
-from quasicentral.engine import catalog
-
-from quasicentral.engine import errata
+from quasicentral.engine import catalog, texts
 from quasicentral.engine.checker import Options, check
+from quasicentral.engine.registry import REGISTRY
+from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Status, Verdict, Verified
 from quasicentral.files import write_text
-from quasicentral.engine.registry import REGISTRY, load_all
-from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Verdict, Verified
 
-CACHE_VERSION = "1"
+CACHE_VERSION = "2"  # 2: texts as folders, keys per text
 
 
 def cache_dir() -> Path:
@@ -35,10 +33,8 @@ def cache_dir() -> Path:
 
 
 def code_fingerprint() -> str:
-    """Hash of every source and data file of the library and the derivations, and of the
-    versions of the libraries that compute the verdicts."""
-    import derivations
-
+    """Hash of every source file of the package and of the versions of the libraries that
+    compute the verdicts (each text's own files are hashed by :meth:`texts.Text.fingerprint`)."""
     from importlib import metadata
 
     h = hashlib.sha256(CACHE_VERSION.encode())
@@ -47,63 +43,63 @@ def code_fingerprint() -> str:
             h.update(f"{dist}={metadata.version(dist)}".encode())
         except metadata.PackageNotFoundError:
             h.update(dist.encode())
-    for pkg in (Path(__file__).parent.parent, Path(derivations.__file__).parent):
-        for path in sorted(pkg.rglob("*")):
-            if path.suffix in (".py", ".toml") and "__pycache__" not in path.parts:
-                h.update(path.relative_to(pkg.parent).as_posix().encode())
-                h.update(path.read_bytes())
+    pkg = Path(__file__).parent.parent
+    for path in sorted(pkg.rglob("*.py")):
+        if "__pycache__" not in path.parts:
+            h.update(path.relative_to(pkg).as_posix().encode())
+            h.update(path.read_bytes())
     return h.hexdigest()
 
 
 def verify_entry(entry: catalog.Entry, opts: Options) -> Outcome:
-    load_all()
-    errs, cleared = errata.load()
+    text = texts.text_of(entry.id)
     derivation = REGISTRY.get(entry.id)
     if derivation is None:
         v = Inconclusive(Method.NONE, "no derivation registered for this entry yet")
-        return Outcome(entry.id, v, "unexpected", problems=("no derivation",))
-    v = check(entry.relations(), entry.dims, derivation, entry.id, opts)
-    rec = errs.get(entry.id)
+        return Outcome(entry.id, v, Status.UNEXPECTED, problems=("no derivation",))
+    v = check(entry.relations(), entry.dims, derivation, entry.id, opts, entry.symbols)
+    rec = text.errata.get(entry.id)
     if rec is not None:
         # the same points as the printed form (one seed): the printed and the corrected value
         # are compared with the same derived one
-        cv = check(rec.relations(), {**entry.dims}, derivation, entry.id, opts)
+        cv = check(rec.relations(), {**entry.dims}, derivation, entry.id, opts, entry.symbols)
         problems = []
         if not isinstance(v, Refuted):
             problems.append(f"the printed form is {v.name}, not refuted: the registered erratum does not stand")
         if not isinstance(cv, Verified):
             problems.append(f"the corrected form is {cv.name}: {cv.detail}")
-        return Outcome(entry.id, v, "unexpected" if problems else "erratum", True, cv, tuple(problems))
-    if entry.id in cleared:
-        status = "cleared" if isinstance(v, Verified) else "unexpected"
-        return Outcome(entry.id, v, status, problems=() if status == "cleared" else (f"cleared suspect is {v.name}",))
+        return Outcome(entry.id, v, Status.UNEXPECTED if problems else Status.ERRATUM, True, cv, tuple(problems))
+    if entry.id in text.cleared:
+        status = Status.CLEARED if isinstance(v, Verified) else Status.UNEXPECTED
+        return Outcome(entry.id, v, status, problems=() if status.ok else (f"cleared suspect is {v.name}",))
     if isinstance(v, Verified):
-        return Outcome(entry.id, v, "verified")
-    return Outcome(entry.id, v, "unexpected", problems=(f"{v.name}: {v.detail}",))
+        return Outcome(entry.id, v, Status.VERIFIED)
+    return Outcome(entry.id, v, Status.UNEXPECTED, problems=(f"{v.name}: {v.detail}",))
 
 
 def _outcome_json(o: Outcome) -> dict:
-    return {"id": o.id, "verdict": o.verdict.to_json(), "status": o.status, "erratum": o.erratum,
+    return {"id": o.id, "verdict": o.verdict.to_json(), "status": o.status.value, "erratum": o.erratum,
             "corrected_verdict": o.corrected_verdict.to_json() if o.corrected_verdict else None,
             "problems": list(o.problems)}
 
 
 def _outcome_from_json(d: dict) -> Outcome:
     cv = d.get("corrected_verdict")
-    return Outcome(d["id"], Verdict.from_json(d["verdict"]), d["status"], d["erratum"],
+    return Outcome(d["id"], Verdict.from_json(d["verdict"]), Status(d["status"]), d["erratum"],
                    Verdict.from_json(cv) if cv else None, tuple(d["problems"]))
 
 
 def _worker(args):
     eid, opts = args
-    return eid, _outcome_json(verify_entry(catalog.get(eid), opts))
+    return eid, _outcome_json(verify_entry(texts.entry(eid), opts))
 
 
 def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None) -> list[Outcome]:
     """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed)."""
     fp = code_fingerprint()
-    key_of = {e.id: hashlib.sha256(json.dumps([fp, e.id, asdict(opts)], sort_keys=True).encode()).hexdigest()
-              for e in entries}
+    text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
+    key_of = {e.id: hashlib.sha256(json.dumps([fp, text_fp[e.text], e.id, asdict(opts)], sort_keys=True).encode()
+                                   ).hexdigest() for e in entries}
     results: dict[str, dict] = {}
     cdir = cache_dir()
     if use_cache:
@@ -116,13 +112,12 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
                     pass
     todo = [e.id for e in entries if e.id not in results]
     if todo:
-        load_all()
         jobs = jobs or min(len(todo), os.cpu_count() or 1)
         if jobs > 1 and len(todo) > 1:
             # the costly entries (quadratures) first, so that the workers finish together
             import sympy as sp
 
-            by_cost = sorted(todo, key=lambda i: not catalog.get(i).printed.has(sp.Integral))
+            by_cost = sorted(todo, key=lambda i: not texts.entry(i).printed.has(sp.Integral))
             with ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("fork")) as pool:
                 for eid, res in pool.map(_worker, [(i, opts) for i in by_cost], chunksize=1):
                     results[eid] = res
@@ -143,7 +138,7 @@ def summary(outcomes: list[Outcome]) -> dict:
     by_verdict: dict[str, int] = {}
     by_method: dict[str, int] = {}
     for o in outcomes:
-        by_status[o.status] = by_status.get(o.status, 0) + 1
+        by_status[o.status.value] = by_status.get(o.status.value, 0) + 1
         by_verdict[o.verdict.name] = by_verdict.get(o.verdict.name, 0) + 1
         by_method[o.verdict.method.value] = by_method.get(o.verdict.method.value, 0) + 1
     return {

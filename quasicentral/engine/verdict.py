@@ -98,17 +98,30 @@ def combine(verdicts: list[Verdict]) -> Verdict:
     return worst
 
 
+class Status(str, Enum):
+    """What an entry's verdict means against what the text's records expect of it."""
+
+    VERIFIED = "verified"  # printed = derived
+    ERRATUM = "erratum"  # printed refuted, the registered correction verified
+    CLEARED = "cleared"  # a registered suspicion that verified
+    UNEXPECTED = "unexpected"  # anything else
+
+    @property
+    def ok(self) -> bool:
+        return self is not Status.UNEXPECTED
+
+
 @dataclass(frozen=True)
 class Outcome:
     """What the verification of one catalog entry came to, against what was expected."""
 
     id: str
     verdict: Verdict
-    status: str  # "verified" | "erratum" | "cleared" | "unexpected"
+    status: Status
     erratum: bool = False
     corrected_verdict: Verdict | None = None
     problems: tuple[str, ...] = field(default_factory=tuple)
 
     @property
     def ok(self) -> bool:
-        return self.status in ("verified", "erratum", "cleared")
+        return Status(self.status).ok

@@ -17,7 +17,6 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from quasicentral.notation import symbols as S
 
 #: sympy name -> mpmath function.  One table for the whole project.
 def _quad(f, *intervals):
@@ -63,28 +62,47 @@ def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
     return expr.replace(lambda e: isinstance(e, sp.Sum), close)
 
 
+def _one_variable(f: sp.Basic) -> sp.Symbol | None:
+    """The variable of an applied function of one symbol, ``x(t)`` → t; else None."""
+    if isinstance(f, sp.core.function.AppliedUndef) and len(f.args) == 1 and isinstance(f.args[0], sp.Symbol):
+        return f.args[0]
+    return None
+
+
 def to_jets(expr: sp.Basic) -> sp.Basic:
-    """Evaluate time derivatives of expressions, then name each function jet by a symbol."""
+    """Evaluate derivatives of expressions, then name each function jet by a symbol: ``x(t)`` →
+    ``x_t0``, ``x'(t)`` → ``x_t1``, ``u''(θ)`` → ``u_theta2`` (any independent variable)."""
     expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
     repl = {}
     for d in expr.atoms(sp.Derivative):
-        f = d.expr
-        if isinstance(f, sp.core.function.AppliedUndef) and set(v for v, _ in d.variable_count) == {S.t}:
-            repl[d] = jet_symbol(f, d.derivative_count)
+        var = _one_variable(d.expr)
+        if var is not None and {v for v, _ in d.variable_count} == {var}:
+            repl[d] = jet_symbol(d.expr, d.derivative_count)
     expr = expr.xreplace(repl)
-    repl = {f: jet_symbol(f, 0) for f in expr.atoms(sp.core.function.AppliedUndef) if f.args == (S.t,)}
+    repl = {f: jet_symbol(f, 0) for f in expr.atoms(sp.core.function.AppliedUndef) if _one_variable(f) is not None}
     return expr.xreplace(repl)
+
+
+_JETS: dict[sp.Symbol, tuple[sp.Basic, int]] = {}
 
 
 @lru_cache(maxsize=None)
 def jet_symbol(f: sp.Basic, order: int) -> sp.Symbol:
-    name = f.func.__name__
-    positive = name in ("rho", "v", "s") and order == 0
-    return sp.Symbol(f"{name}_t{order}", positive=True) if positive else sp.Symbol(f"{name}_t{order}", real=True)
+    """The symbol standing for the ``order``-th derivative of ``f`` (positive where f's value is
+    declared nonnegative; derivatives are real)."""
+    name = f"{f.func.__name__}_{f.args[0].name}{order}"
+    sym = sp.Symbol(name, positive=True) if order == 0 and f.is_nonnegative else sp.Symbol(name, real=True)
+    _JETS[sym] = (f, order)
+    return sym
 
 
 def is_jet(sym: sp.Basic) -> bool:
-    return isinstance(sym, sp.Symbol) and "_t" in sym.name and sym.name.rsplit("_t", 1)[1].isdigit()
+    return sym in _JETS
+
+
+def jet_of(sym: sp.Symbol) -> tuple[sp.Basic, int]:
+    """The function and derivative order a jet symbol stands for."""
+    return _JETS[sym]
 
 
 def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):

@@ -1,6 +1,10 @@
 """Declared domains: where each symbol lives, the paper's assumptions, and the definitions that
 tie derived symbols to the primitive ones (Ω = √(g/l), u = R0Ω, …).
 
+A text's symbol table gives the default range and definition of each symbol
+(:class:`~quasicentral.notation.symbols.SymbolTable`); a derivation's :class:`Domain` narrows or
+adds to them for its own step.
+
 Points are sampled at random (seeded by the equation id, so a run is reproducible) as *exact*
 sympy numbers; they cross to mpmath only in :mod:`quasicentral.bridge`.
 """
@@ -13,44 +17,9 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from quasicentral.notation import symbols as S
+from quasicentral.notation.symbols import SymbolTable
 
 Interval = tuple[sp.Expr, sp.Expr]
-
-#: Where a symbol lives unless a derivation says otherwise (SI units).  Intervals may refer to
-#: symbols sampled before them (``t`` runs over four periods of the undamped motion).
-DEFAULT_RANGES: dict[sp.Symbol, Interval] = {
-    S.m: (sp.Rational(1, 10), 10),
-    S.g: (1, 25),
-    S.l: (sp.Rational(1, 10), 10),
-    S.R0: (sp.Rational(1, 100), 1),
-    S.v0: (sp.Rational(1, 100), 2),
-    S.kappa: (0, 3),
-    S.beta: (0, 2),
-    S.phi0: (sp.Rational(1, 100), sp.pi - sp.Rational(1, 100)),
-    S.alpha: (-sp.pi, sp.pi),
-    S.S: (-5, 5),
-    S.R: (0, 5),
-    S.A: (-2, 2), S.B: (-2, 2), S.C: (-2, 2), S.D_: (-2, 2), S.Cst: (-2, 2),
-    S.K1: (-1, 1), S.L1: (-1, 1), S.M1: (-1, 1), S.N1: (-1, 1),
-    S.C1: (-1, 1), S.C2: (-1, 1), S.C3: (-1, 1), S.C4: (-1, 1), S.D1: (-1, 1), S.D2: (-1, 1),
-    S.vx: (-2, 2), S.vy: (-2, 2), S.ax: (-2, 2), S.ay: (-2, 2),
-    S.zeta: (-1, 1),
-    S.z: (-sp.pi, sp.pi),
-    S.th: (0, 4 * sp.pi),
-    S.vphi: (0, sp.Rational(3, 2)),
-    S.w: (0, sp.pi / 2),
-    S.k: (sp.Rational(1, 20), sp.Rational(19, 20)),
-    S.k2: (-2, sp.Rational(19, 20)),
-    S.E_tot: (-5, 5), S.T_kin: (0, 5), S.V_pot: (-5, 5), S.Tper: (sp.Rational(1, 10), 10),
-}
-
-#: Definitions applied before evaluation (a derivation may add its own or drop these).
-DEFAULT_DEFINITIONS: dict[sp.Symbol, sp.Expr] = {
-    S.Omega: sp.sqrt(S.g / S.l),
-    S.u: S.R0 * S.Omega,
-    S.omega: sp.sqrt(S.Omega**2 - S.kappa**2),
-}
 
 JET_RANGE: Interval = (-2, 2)
 POSITIVE_JET_RANGE: Interval = (sp.Rational(1, 10), 2)
@@ -60,39 +29,36 @@ POSITIVE_JET_RANGE: Interval = (sp.Rational(1, 10), 2)
 class Domain:
     """Ranges for symbols, definitions of dependent symbols, and constraints (sympy booleans).
 
-    ``ranges`` override :data:`DEFAULT_RANGES`; ``time`` is the interval of t (default four
-    periods 2π/Ω when Ω is defined, else [0, 10] s).
+    ``ranges`` override the text's declared ranges; ``defaults=False`` drops the text's
+    definitions (Ω = √(g/l), …) so that the step keeps those symbols free.
     """
 
     ranges: tuple[tuple[sp.Basic, Interval], ...] = ()
     definitions: tuple[tuple[sp.Basic, sp.Expr], ...] = ()
     constraints: tuple[sp.Basic, ...] = ()
-    time: Interval | None = None
-    defaults: bool = True  # apply DEFAULT_DEFINITIONS
+    defaults: bool = True  # apply the text's definitions
 
     @staticmethod
-    def of(ranges=None, definitions=None, constraints=(), time=None, defaults=True) -> "Domain":
+    def of(ranges=None, definitions=None, constraints=(), defaults=True) -> "Domain":
         return Domain(
             ranges=tuple((ranges or {}).items()),
             definitions=tuple((definitions or {}).items()),
             constraints=tuple(constraints),
-            time=time,
             defaults=defaults,
         )
 
-    def definition_map(self) -> dict[sp.Basic, sp.Expr]:
-        out = dict(DEFAULT_DEFINITIONS) if self.defaults else {}
+    def definition_map(self, table: SymbolTable) -> dict[sp.Basic, sp.Expr]:
+        out = dict(table.definitions) if self.defaults else {}
         out.update(dict(self.definitions))
         return out
 
-    def range_map(self) -> dict[sp.Basic, Interval]:
-        out = dict(DEFAULT_RANGES)
-        out[S.t] = self.time if self.time is not None else (0, 8 * sp.pi / S.Omega)
+    def range_map(self, table: SymbolTable) -> dict[sp.Basic, Interval]:
+        out = dict(table.ranges)
         out.update(dict(self.ranges))
         return out
 
     def key(self) -> str:
-        return sp.srepr((self.ranges, self.definitions, self.constraints, self.time, self.defaults))
+        return sp.srepr((self.ranges, self.definitions, self.constraints, self.defaults))
 
 
 def substitute_definitions(expr: sp.Basic, defs: dict[sp.Basic, sp.Expr], rounds: int = 6) -> sp.Basic:
@@ -114,15 +80,16 @@ class Sampler:
     """Draws exact points for a set of free symbols inside a :class:`Domain`."""
 
     domain: Domain
+    table: SymbolTable
     symbols: list[sp.Symbol]
     seed: int
     extra_ranges: dict = field(default_factory=dict)
 
     def draw(self, count: int, max_tries: int = 200) -> list[dict[sp.Symbol, sp.Expr]]:
         rng = random.Random(self.seed)
-        ranges = self.domain.range_map()
+        ranges = self.domain.range_map(self.table)
         ranges.update(self.extra_ranges)
-        defs = self.domain.definition_map()
+        defs = self.domain.definition_map(self.table)
         wanted = set(self.symbols)
         for c in self.domain.constraints:
             wanted |= substitute_definitions(c, defs).free_symbols

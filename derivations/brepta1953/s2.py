@@ -12,7 +12,11 @@ import sympy as sp
 
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import derived, derives
-from quasicentral.notation.symbols import A, B, D, R, S, alpha, beta, kappa, m, psi, rho, s, t, v
+from quasicentral.notation.symbols import D
+from quasicentral.engine.texts import symbols_of
+
+S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
+A, B, R, S, alpha, beta, kappa, m, psi, rho, s, t, v = S_("A B R S alpha beta kappa m psi rho s t v")
 
 E_RHO = sp.Matrix([sp.cos(psi), sp.sin(psi)])
 E_TAU = sp.Matrix([-sp.sin(psi), sp.cos(psi)])

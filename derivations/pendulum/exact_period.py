@@ -34,9 +34,12 @@ import sympy as sp
 
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import derived, derives
-from quasicentral.notation.symbols import (
-    D, E_tot, Cst, Omega, T_kin, Tper, V_pot, g, l, m, n, phi, phi0, t, v, vphi, w,
-)
+from quasicentral.notation.symbols import D
+from quasicentral.engine.texts import symbols_of
+
+S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
+(E_tot, Cst, Omega, T_kin, Tper, V_pot, g, l, m, n, phi, phi0, t, v, vphi, w) = S_(
+    "E Cst Omega Tkin T V g l m n phi phi0 t v vphi w")
 
 Y = sp.Symbol("y_p")  # the text's y: vertical coordinate of the bob, downward (as the catalog creates it)
 DVPHI, DW = sp.Symbol("dvphi"), sp.Symbol("dw")  # the differentials of (58), as the catalog creates them

@@ -35,10 +35,12 @@ import sympy as sp
 
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import derived, derives
-from quasicentral.notation.symbols import (
-    A as A_sym, B as B_sym, C as C_sym, C1, C2, C3, C4, D, D1, D2, D_, Omega, R0, alpha, ax, ay,
-    g, k, l, m, psi, rho, s, t, th, u, v, v0, x, y, z, zeta,
-)
+from quasicentral.notation.symbols import D
+from quasicentral.engine.texts import symbols_of
+
+S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
+(A_sym, B_sym, C_sym, C1, C2, C3, C4, D1, D2, D_, Omega, R0, alpha, ax, ay, g, k, l, m, psi, rho, s, t, th, u, v,
+ v0, x, y, z, zeta) = S_("A B C C1 C2 C3 C4 D1 D2 D_ Omega R0 alpha ax ay g k l m psi rho s t th u v v0 x y z zeta")
 
 # --- domains ---------------------------------------------------------------------------------
 SPEED = {v: sp.sqrt(D(x) ** 2 + D(y) ** 2)}  # v is the speed |ṙ|

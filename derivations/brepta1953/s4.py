@@ -14,11 +14,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derivations import brepta1953_s2, brepta1953_s3  # noqa: F401  (register the steps used here)
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import derived, derives
-from quasicentral.notation.symbols import (A, B, C, D, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, arccotg, g,
-                                  kappa, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y)
+from quasicentral.notation.symbols import D, arccotg
+from quasicentral.engine.texts import symbols_of
+
+S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
+(A, B, C, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, g, kappa, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y) = S_(
+    "A B C D_ K1 L1 M1 N1 Omega R R0 S alpha g kappa lam m n omega psi rho t th v v0 vx vy x y")
 
 EX, EY = sp.Matrix([1, 0]), sp.Matrix([0, 1])
 #: κ < Ω: the oscillatory case of (18)–(20)

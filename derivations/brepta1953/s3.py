@@ -15,7 +15,12 @@ import sympy as sp
 from sympy.calculus.euler import euler_equations
 
 from quasicentral.engine.registry import derived, derives
-from quasicentral.notation.symbols import C, C1, C2, C3, C4, D, Omega, S, Tper, g, l, m, phi, psi, rho, t
+from quasicentral.notation.symbols import D
+from quasicentral.engine.texts import symbols_of
+
+S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
+(C, C1, C2, C3, C4, Omega, S, Tper, g, l, m, phi, psi, rho, t) = S_(
+    "C C1 C2 C3 C4 Omega S T g l m phi psi rho t")
 
 EPS = sp.Symbol("epsilon", positive=True)  # bookkeeping parameter of the small amplitude
 
