@@ -296,6 +296,8 @@ class ProgressBar:
     """The callback the CLI hands to library functions: draws a tqdm bar on stderr when
     :func:`show_progress` says so, and always keeps the last record (for the timing line)."""
 
+    mininterval = 0.2  # seconds between redraws
+
     def __init__(self, args, label: str, stream=None, enabled: bool | None = None):
         self.stream = sys.stderr if stream is None else stream
         self.enabled = show_progress(args, self.stream) if enabled is None else enabled
@@ -315,14 +317,27 @@ class ProgressBar:
         if self._bar is None or rec.phase != self._phase:
             self.close()
             self._phase = rec.phase
+            size = self._size()
             self._bar = tqdm(total=rec.total, initial=rec.done, desc=self.label, unit=f" {rec.phase or 'items'}",
-                             file=self.stream, dynamic_ncols=True, leave=False, mininterval=0.2,
-                             bar_format="{desc}: {n_fmt}/{total_fmt}{unit} {bar} [{elapsed}<{remaining}] {postfix}")
+                             file=self.stream, dynamic_ncols=size is None, ncols=size and size[0],
+                             nrows=size and size[1], leave=False, mininterval=self.mininterval,
+                             bar_format="{desc}: {n_fmt}/{total_fmt}{unit} {bar} [{elapsed}<{remaining}{postfix}]")
         self._bar.total = rec.total
+        if rec.current:
+            done = "read from the cache" if rec.current == "cache" else f"last done: {rec.current}"
+            self._bar.set_postfix_str(done, refresh=False)
         if rec.done > self._bar.n:
             self._bar.update(rec.done - self._bar.n)
-        if rec.current:
-            self._bar.set_postfix_str(rec.current, refresh=True)
+        else:
+            self._bar.refresh()
+
+    def _size(self) -> tuple[int, int] | None:
+        """None to follow the terminal's size; 80 × 24 when it reports none (a pty without a size)."""
+        try:
+            size = os.get_terminal_size(self.stream.fileno())
+        except (OSError, ValueError, AttributeError, io.UnsupportedOperation):
+            return 80, 24
+        return None if size.columns > 0 and size.lines > 0 else (80, 24)
 
     def close(self) -> None:
         if self._bar is not None:
