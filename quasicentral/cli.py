@@ -719,6 +719,8 @@ def _report(args) -> int:
     if args.pdf:
         try:
             pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE])
+        except UnsafePath as exc:
+            raise UsageError(f"--out: {exc}") from None
         except report.LatexError as exc:
             print(f"quasicentral: error: {exc}", file=sys.stderr)
             return EXIT_UNEXPECTED

@@ -64,6 +64,16 @@ def ensure_dir(path: Path) -> Path:
     return path
 
 
+def output_dir(path: Path) -> Path:
+    """The output directory the user named (``--out DIR``), created if needed.  It may itself be
+    a symbolic link to a directory (the user chose it); everything below it is checked."""
+    path = Path(path)
+    path.mkdir(parents=True, exist_ok=True)
+    if not path.is_dir():
+        raise NotADirectoryError(errno.ENOTDIR, "not a directory", str(path))
+    return path
+
+
 def write_atomic(path: Path, fill: Callable[[Path], None]) -> None:
     """Let ``fill`` write a unique temporary file beside ``path``, then rename it over ``path``.
     On any failure the temporary file is removed and ``path`` is left as it was.  Refuses a
@@ -111,7 +121,7 @@ def check_writable(directory: Path) -> None:
     """Raise ``OSError`` when ``directory`` cannot be created or written to, before anything
     is written: creates and removes a uniquely named probe (``O_EXCL``: an existing file or
     link of that name is never opened)."""
-    directory = ensure_dir(directory)
+    directory = output_dir(directory)
     fd, name = tempfile.mkstemp(prefix=".quasicentral-write-test.", suffix=".tmp", dir=directory)
     os.close(fd)
     os.unlink(name)

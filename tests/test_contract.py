@@ -71,6 +71,7 @@ def closed_reader_run(*args, env=None):
 @pytest.mark.parametrize("args", [
     ["verify", *CHEAP],
     ["verify", "--json", *CHEAP],
+    ["period", "--table"],
     ["--help"],
     ["verify", "--help"],
 ])
@@ -238,6 +239,33 @@ def test_files_module(tmp_path):
     assert (tmp_path / "ok.txt").read_text(encoding="utf-8") == "é"
     assert oct((tmp_path / "ok.txt").stat().st_mode & 0o777) == oct(0o644)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["link", "ok.txt", "victim"]
+
+
+def test_out_may_itself_be_a_link_to_a_directory(tmp_path):
+    """The directory the user names is the user's choice; what is created below it is checked."""
+    real = tmp_path / "real"
+    real.mkdir()
+    (tmp_path / "out").symlink_to(real, target_is_directory=True)
+    files.check_writable(tmp_path / "out")
+    files.write_text(files.inside(tmp_path / "out", "a.txt"), "x")
+    assert (real / "a.txt").read_text() == "x"
+    (tmp_path / "file").write_text("")
+    with pytest.raises(OSError):
+        files.output_dir(tmp_path / "file")
+
+
+def test_latex_never_writes_through_a_link(tmp_path):
+    from quasicentral.documents import report
+
+    victim = tmp_path / "victim.pdf"
+    victim.write_bytes(b"precious")
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "doc.tex").write_text("\\documentclass{article}\\begin{document}x\\end{document}\n")
+    (out / "doc.pdf").symlink_to(victim)
+    with pytest.raises(files.UnsafePath):
+        report.compile_one(out, "doc.tex")
+    assert victim.read_bytes() == b"precious"
 
 
 # --- LaTeX: a failed run cleans what blocks the next one ----------------------------------------------

@@ -731,6 +731,8 @@ def compile_one(out: Path, name: str) -> Path:
     """``latexmk -pdf`` one document in ``out``; raise :class:`LatexError` on any LaTeX error
     or undefined reference.  Returns the PDF's path."""
     stem = name[:-4]
+    for suffix in (".pdf", ".log") + AUX_SUFFIXES:  # LaTeX would write through a link
+        files.inside(out, stem + suffix)
     log = out / f"{stem}.log"
     env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1"}
     cmd = ["latexmk", "-norc", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",

@@ -178,7 +178,7 @@ def write_all(out: Path, progress=None) -> list[Path]:
     from quasicentral import files
     from quasicentral.progress import notify
 
-    files.ensure_dir(out)
+    files.output_dir(out)
     written = []
     for i, make in enumerate(ALL):
         fig = make()
