@@ -78,8 +78,11 @@ def build_parser() -> argparse.ArgumentParser:
     from quasicentral.models.motion import MODELS  # the models' registry names the choices
 
     p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.",
-                epilog="exit codes: 0 success, 1 an unexpected result (see each command), 2 bad usage or input "
-                       "(one line on stderr)\n\nexamples:\n  quasicentral verify\n  quasicentral verify --help")
+                epilog="exit codes: 0 success, 1 an unexpected result (see each command), 2 bad usage or input\n"
+                       "(one line on stderr).  A reader that closes the pipe early (| head) ends the output quietly\n"
+                       "and the exit code stays the command's own, so `set -o pipefail` fails only on a real failure.\n"
+                       "Long commands draw progress on stderr when it is a terminal (not when CI is set, nor with --json).\n"
+                       "\nexamples:\n  quasicentral verify\n  quasicentral verify --help")
     p.add_argument("--version", action="version", version=f"%(prog)s {version()}")
     sub = p.add_subparsers(dest="command", parser_class=_Parser, metavar="COMMAND")
     sources = sorted(SOURCES)
