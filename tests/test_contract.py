@@ -131,13 +131,15 @@ def test_a_result_still_fails_when_the_pipe_is_closed(cache, monkeypatch):
     (["catalog", "--source", "nosuch"], ["--source"]),
     (["trajectory", "--model", "nosuch", "--R0", "0.1", "--v0", "0"], ["--model", "ellipse"]),
 ])
-def test_refused_in_one_line(args, names):
-    code, out, err = run_cli(*args)
+def test_refused_in_one_line(args, names, capsys):
+    code = main(args)
+    out, err = capsys.readouterr()
     one_line_error(code, err, *names)
     assert out == ""
 
 
 def test_empty_selection_writes_no_junit(tmp_path):
+    """The reproduction as typed, in a subprocess."""
     target = tmp_path / "verify.xml"
     code, _, err = run_cli("verify", "--source", "pendulum", "--id", "brepta1953:4", "--junit", str(target))
     one_line_error(code, err, "--id", "--source")
