@@ -174,6 +174,16 @@ def test_report_refuses_a_symlinked_figures_folder(tmp_path):
     assert list(elsewhere.iterdir()) == []
 
 
+def test_report_writes_its_figures_inside_out(tmp_path):
+    from quasicentral.documents import report
+
+    out = tmp_path / "out"
+    paths = report.write(out, {"a.tex": f"\\includegraphics{{{report.FIGURE_DIR}/fig7a.png}}"})
+    assert paths == [out / "a.tex", out / report.FIGURE_DIR / "fig7a.png"]
+    assert (out / report.FIGURE_DIR / "fig7a.png").read_bytes().startswith(b"\x89PNG")
+    assert sorted(p.name for p in out.rglob("*")) == ["a.tex", "fig7a.png", report.FIGURE_DIR]
+
+
 def test_report_refuses_a_symlinked_document(tmp_path):
     from quasicentral.documents import report
 
