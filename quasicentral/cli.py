@@ -263,7 +263,7 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("quasicentral: interrupted", file=sys.stderr)
         return 130
-    except BrokenPipeError:  # a write that bypassed sys.stdout (a library's own stream)
+    except BrokenPipeError:  # a write that bypassed sys.stdout: the command's own code is lost
         quiet._break()
         return EXIT_OK
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
@@ -306,13 +306,11 @@ class ProgressBar:
         self.enabled = show_progress(args, self.stream) if enabled is None else enabled
         self.label = label
         self.last = None
-        self.first = {}  # phase -> the first record of that phase
         self._bar = None
         self._phase = None
 
     def __call__(self, rec) -> None:
         self.last = rec
-        self.first.setdefault(rec.phase, rec)
         if not self.enabled:
             return
         from tqdm import tqdm

@@ -38,7 +38,7 @@ def _refuse_link(path: Path) -> None:
     except FileNotFoundError:
         return
     if stat.S_ISLNK(st.st_mode):
-        raise UnsafePath(path, "is a symbolic link; refusing to write through it (remove it or choose another --out)")
+        raise UnsafePath(path, "is a symbolic link; refusing to write through it (remove the link)")
 
 
 def inside(root: Path, relative: str | Path) -> Path:
