@@ -102,8 +102,9 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--id", action="append", dest="ids", metavar="ID",
                    help="only this entry, e.g. brepta1953:4 (repeatable; see `quasicentral catalog`)")
     v.add_argument("--json", action="store_true", help="print a JSON document instead of the table (no progress bar)")
-    v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30,
-                   help="first rung of the precision ladder, decimal digits (default 30; the ladder is dps, 2·dps)")
+    v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30, metavar="N",
+                   help=f"first rung of the precision ladder, decimal digits, at most {VERIFY_MAX_DPS} "
+                        "(default 30; the ladder is dps, 2·dps)")
     v.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (a cold run; default: use them)")
     v.add_argument("--junit", metavar="FILE", help="also write a JUnit XML report to FILE (default: none)")
     v.add_argument("--jobs", type=_positive_int("--jobs", 64), default=None, metavar="N",
