@@ -82,14 +82,18 @@ def write_atomic(path: Path, fill: Callable[[Path], None]) -> None:
     path = Path(path)
     _refuse_link(path)
     fd, name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
     tmp = Path(name)
     try:
+        made = os.fstat(fd)
         fill(tmp)
-        os.chmod(tmp, 0o644)
+        now = os.lstat(tmp)
+        if not stat.S_ISREG(now.st_mode) or (now.st_dev, now.st_ino) != (made.st_dev, made.st_ino):
+            raise UnsafePath(tmp, "was replaced while it was written; refusing to rename it into place")
+        os.fchmod(fd, 0o644)
         _refuse_link(path)
         os.replace(tmp, path)  # replaces the directory entry: never follows a link
     finally:
+        os.close(fd)
         if os.path.lexists(tmp):
             tmp.unlink()
 

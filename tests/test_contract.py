@@ -512,3 +512,17 @@ def test_model_choices_listed():
     assert code == 0
     for name in MODELS:
         assert name in out
+
+
+def test_a_temporary_file_swapped_mid_write_is_not_renamed_into_place(tmp_path):
+    target = tmp_path / "a.txt"
+    target.write_text("old")
+
+    def swap(tmp):
+        tmp.unlink()
+        tmp.write_text("someone else's")
+
+    with pytest.raises(files.UnsafePath):
+        files.write_atomic(target, swap)
+    assert target.read_text() == "old"
+    assert [p.name for p in tmp_path.iterdir()] == ["a.txt"]
