@@ -353,6 +353,10 @@ class ProgressBar:
         self.close()
 
 
+def _entries(n: int) -> str:
+    return f"{n} entr{'y' if n == 1 else 'ies'}"
+
+
 def _timing(args, text: str) -> None:
     """The line that says what was timed (stderr; not with --json)."""
     if not getattr(args, "json", False):
@@ -405,7 +409,7 @@ def _verify(args) -> int:
     else:
         print(output.verify_table(doc))
     cached = bar.last.cached if bar.last else 0
-    _timing(args, f"verify: checked {len(entries)} entries in {seconds:.1f} s "
+    _timing(args, f"verify: checked {_entries(len(entries))} in {seconds:.1f} s "
                   f"(computed: {len(entries) - cached}, read from the cache: {cached})")
     return EXIT_OK if doc["summary"]["ok"] else EXIT_UNEXPECTED
 
@@ -437,7 +441,7 @@ def _mutate(args) -> int:
         print(json.dumps(res, indent=2, ensure_ascii=False))
     else:
         print(mutate.table(res))
-    _timing(args, f"mutate: {res['mutants']} mutants of {res['entries']} entries checked in {seconds:.1f} s")
+    _timing(args, f"mutate: {res['mutants']} mutants of {_entries(res['entries'])} checked in {seconds:.1f} s")
     return EXIT_OK if res["recall"] == 1.0 and res["false_alarms"] == 0 else EXIT_UNEXPECTED
 
 
@@ -455,7 +459,7 @@ def _catalog(args) -> int:
         print(json.dumps(doc, indent=2, ensure_ascii=False))
     else:
         print(output.catalog_table(doc))
-    _timing(args, f"catalog: parsed the LaTeX of {len(entries)} entries in {seconds:.1f} s")
+    _timing(args, f"catalog: parsed the LaTeX of {_entries(len(entries))} in {seconds:.1f} s")
     return EXIT_OK
 
 
