@@ -41,6 +41,19 @@ def _refuse_link(path: Path) -> None:
         raise UnsafePath(path, "is a symbolic link; refusing to write through it (remove the link)")
 
 
+def _refuse_special(path: Path) -> None:
+    """A file target must be absent or a regular file: renaming over a device, a pipe or a
+    socket (``--junit /dev/null`` as root) would replace it."""
+    _refuse_link(path)
+    try:
+        st = os.lstat(path)
+    except FileNotFoundError:
+        return
+    if not stat.S_ISREG(st.st_mode):
+        kind = "a directory" if stat.S_ISDIR(st.st_mode) else "not a regular file"
+        raise UnsafePath(path, f"is {kind}; refusing to replace it")
+
+
 def inside(root: Path, relative: str | Path) -> Path:
     """``root / relative``, refused unless it stays inside ``root`` (no ``..``, not absolute)
     and no existing component below ``root`` is a symbolic link."""
@@ -80,7 +93,7 @@ def write_atomic(path: Path, fill: Callable[[Path], None]) -> None:
     ``path`` that is a symbolic link (the rename would replace the link, not its target, but a
     link there means someone expects the target to change: say so instead)."""
     path = Path(path)
-    _refuse_link(path)
+    _refuse_special(path)
     fd, name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     tmp = Path(name)
     try:
@@ -102,7 +115,7 @@ def write_bytes(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` atomically, through the temporary file's own descriptor (the
     temporary name is never reopened)."""
     path = Path(path)
-    _refuse_link(path)
+    _refuse_special(path)
     fd, name = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     tmp = Path(name)
     try:

@@ -526,3 +526,15 @@ def test_a_temporary_file_swapped_mid_write_is_not_renamed_into_place(tmp_path):
         files.write_atomic(target, swap)
     assert target.read_text() == "old"
     assert [p.name for p in tmp_path.iterdir()] == ["a.txt"]
+
+
+def test_a_special_file_is_never_replaced(tmp_path):
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    (tmp_path / "dir").mkdir()
+    for target in (fifo, tmp_path / "dir"):
+        with pytest.raises(files.UnsafePath, match="refusing to replace"):
+            files.write_text(target, "x")
+        with pytest.raises(files.UnsafePath):
+            files.write_atomic(target, lambda tmp: tmp.write_text("x"))
+    assert fifo.is_fifo() and (tmp_path / "dir").is_dir()
