@@ -724,7 +724,8 @@ def _report(args) -> int:
         print(p)
     if args.pdf:
         try:
-            pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE])
+            with ProgressBar(args, "report") as bar:
+                pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE], progress=bar)
         except UnsafePath as exc:
             raise UsageError(f"--out: {exc}") from None
         except report.LatexError as exc:

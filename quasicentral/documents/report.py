@@ -702,6 +702,7 @@ def write(out: Path, docs: dict[str, str], progress=None) -> list[Path]:
     figs = figures_needed(docs)
     if figs:
         files.ensure_dir(files.inside(out, FIGURE_DIR))
+    notify(progress, 0, len(figs), "", 0, "figures")
     for i, f in enumerate(figs):
         put(files.inside(out, f.path), lambda tmp, f=f: figures_mod.draw(f.make(), tmp))
         notify(progress, i + 1, len(figs), f.path, 0, "figures")
@@ -774,10 +775,18 @@ def clean_job(out: Path, stem: str) -> list[Path]:
     return removed
 
 
-def compile_all(out: Path, names: list[str], jobs: int | None = None) -> list[Path]:
-    """Compile the documents (in parallel); the first failure raises :class:`LatexError`."""
+def compile_all(out: Path, names: list[str], jobs: int | None = None, progress=None) -> list[Path]:
+    """Compile the documents (in parallel); the first failure raises :class:`LatexError`.
+    ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told of each PDF."""
+    from quasicentral.progress import notify
+
     names = [n for n in names if n != VERSIONS_FILE]
     jobs = jobs or min(len(names), os.cpu_count() or 1) or 1
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(compile_one, out, n) for n in names]
-        return [f.result() for f in futures]
+        pdfs = []
+        notify(progress, 0, len(names), "", 0, "PDFs")
+        for name, f in zip(names, futures):
+            pdfs.append(f.result())
+            notify(progress, len(pdfs), len(names), name, 0, "PDFs")
+        return pdfs

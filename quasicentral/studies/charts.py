@@ -951,6 +951,7 @@ def build(out: Path, quick: bool = False, only: list[str] | None = None, progres
     base = machine()
     base["mode"] = "quick" if quick else "full"
     written = []
+    notify(progress, 0, len(wanted), "", 0, "charts")
     for name in wanted:
         if name.startswith("workprecision-"):
             q = name.removeprefix("workprecision-")

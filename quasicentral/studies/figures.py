@@ -180,6 +180,7 @@ def write_all(out: Path, progress=None) -> list[Path]:
 
     files.output_dir(out)
     written = []
+    notify(progress, 0, len(ALL), "", 0, "figures")
     for i, make in enumerate(ALL):
         fig = make()
         csv_path, png_path = files.inside(out, f"{fig.name}.csv"), files.inside(out, f"{fig.name}.png")
