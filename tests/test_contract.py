@@ -449,11 +449,11 @@ def test_progress_shown_under_a_pty_and_not_in_a_pipe(cache):
 
     cmd = [sys.executable, "-m", "quasicentral.cli", "verify", *CHEAP]
     master, slave = pty.openpty()
+    chunks = []
     try:
-        proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=slave, env=env_without_ci(), timeout=300)
-        os.close(slave)
-        chunks = []
-        while True:
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=slave, env=env_without_ci())
+        os.close(slave)  # the child holds the only other end: reading ends (EIO) when it exits
+        while True:  # read while it runs, so that it never blocks on a full terminal buffer
             try:
                 data = os.read(master, 65536)
             except OSError:
@@ -461,6 +461,7 @@ def test_progress_shown_under_a_pty_and_not_in_a_pipe(cache):
             if not data:
                 break
             chunks.append(data)
+        proc.wait(timeout=300)
     finally:
         os.close(master)
     assert proc.returncode == 0
