@@ -2,14 +2,26 @@
 
 Exit codes: 0 success (every entry verified, a registered erratum or a cleared suspect);
 1 something unexpected (a new mismatch, an erratum that no longer stands, an inconclusive
-entry); 2 bad usage or bad input (one line on stderr, never a traceback).
+entry); 2 bad usage or bad input (one line on stderr naming the option, never a traceback).
+
+A reader that stops early (``quasicentral verify | head -2``) is not an error: the output
+stops quietly and the exit code is still the command's own verdict (0 when everything
+verified), not 141 or 1.  A pipeline under ``set -o pipefail`` therefore fails only when the
+verification does, as it does with ``grep -q`` style readers.
+
+Progress of long work (verify, errata, catalog, mutate, charts, report, figures) is drawn on
+stderr with tqdm only when stderr is a terminal, the environment variable ``CI`` is not set
+and ``--json`` is not given; library functions only report :class:`quasicentral.progress.Progress`
+records to a callback.
 """
 
 from __future__ import annotations
 
 import argparse
+import io
 import json
 import math
+import os
 import sys
 import time
 from pathlib import Path
@@ -24,8 +36,28 @@ class UsageError(Exception):
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", argparse.RawDescriptionHelpFormatter)
+        super().__init__(*args, **kwargs)
+
     def error(self, message):  # argparse would print usage and exit 2; we keep one line
         raise UsageError(message)
+
+
+def _command(sub, name: str, summary: str, description: str, examples: str):
+    """A subcommand with a one-line summary (in ``quasicentral --help``), a description and
+    worked examples (in ``quasicentral NAME --help``)."""
+    return sub.add_parser(name, help=summary, description=f"{summary[0].upper()}{summary[1:]}.\n\n{description}",
+                          epilog="examples:\n" + "\n".join(f"  {line}" for line in examples.strip().splitlines()))
+
+
+def version() -> str:
+    from importlib import metadata
+
+    try:
+        return metadata.version("quasicentral")
+    except metadata.PackageNotFoundError:
+        return "unknown (not installed)"
 
 
 def _positive_int(name: str, upper: int):
@@ -46,33 +78,66 @@ def _add_text_options(parser: argparse.ArgumentParser, source: bool = True) -> N
     parser.add_argument("--text", action="append", dest="texts", metavar="DIR",
                         help="a text's folder, or a shipped text's id (repeatable; default: the shipped texts)")
     if source:
-        parser.add_argument("--source", metavar="ID", help="only the text with this id (among those selected)")
+        parser.add_argument("--source", metavar="ID",
+                            help="only the entries of the text with this id, among those selected (default: all)")
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.")
-    sub = p.add_subparsers(dest="command", parser_class=_Parser)
+    from quasicentral.models.motion import MODELS  # the models' registry names the choices
 
-    v = sub.add_parser("verify", help="verify every catalog entry (printed vs derived)")
+    p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.",
+                epilog="exit codes: 0 success, 1 an unexpected result (see each command), 2 bad usage or input\n"
+                       "(one line on stderr).  A reader that closes the pipe early (| head) ends the output quietly\n"
+                       "and the exit code stays the command's own, so `set -o pipefail` fails only on a real failure.\n"
+                       "Long commands draw progress on stderr when it is a terminal (not when CI is set, nor with --json).\n"
+                       "\nexamples:\n  quasicentral verify\n  quasicentral verify --help")
+    p.add_argument("--version", action="version", version=f"%(prog)s {version()}")
+    sub = p.add_subparsers(dest="command", parser_class=_Parser, metavar="COMMAND")
+
+    v = _command(sub, "verify", "verify every catalog entry (printed vs derived)",
+                 "Checks each equation as printed against its re-derivation: symbolically, then numerically on a\n"
+                 "precision ladder (dps, 2·dps), certified by ball arithmetic where it can.  Verdicts are cached\n"
+                 "under a hash of the code, the catalog, the errata and the options ($QUASICENTRAL_CACHE, else\n"
+                 "~/.cache/quasicentral).  Exit 0 when every entry is verified, a registered erratum or a cleared\n"
+                 "suspect; 1 when anything is unexpected; 2 on bad usage (e.g. a selection that selects nothing).",
+                 "quasicentral verify\n"
+                 "quasicentral verify --source pendulum --json\n"
+                 "quasicentral verify --id brepta1953:4 --id brepta1953:23 --no-cache --jobs 2\n"
+                 "quasicentral verify --junit build/verify.xml")
     _add_text_options(v)
-    v.add_argument("--id", action="append", dest="ids", metavar="ID", help="only this entry (repeatable)")
-    v.add_argument("--json", action="store_true")
-    v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30,
-                   help="first rung of the precision ladder, decimal digits (default 30; the ladder is dps, 2·dps)")
-    v.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (a cold run)")
-    v.add_argument("--junit", metavar="FILE", help="also write a JUnit XML report")
-    v.add_argument("--jobs", type=_positive_int("--jobs", 64), default=None, help="worker processes (default: cores)")
+    v.add_argument("--id", action="append", dest="ids", metavar="ID",
+                   help="only this entry, e.g. brepta1953:4 (repeatable; see `quasicentral catalog`)")
+    v.add_argument("--json", action="store_true", help="print a JSON document instead of the table (no progress bar)")
+    v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30, metavar="N",
+                   help=f"first rung of the precision ladder, decimal digits, at most {VERIFY_MAX_DPS} "
+                        "(default 30; the ladder is dps, 2·dps)")
+    v.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (a cold run; default: use them)")
+    v.add_argument("--junit", metavar="FILE", help="also write a JUnit XML report to FILE (default: none)")
+    v.add_argument("--jobs", type=_positive_int("--jobs", 64), default=None, metavar="N",
+                   help="worker processes, 1 to 64 (default: one per core, at most one per entry)")
 
-    e = sub.add_parser("errata", help="the errata found and the suspects cleared")
+    e = _command(sub, "errata", "the errata found and the suspects cleared",
+                 "Lists each registered erratum (the printed form refuted, the corrected one verified, with the\n"
+                 "witness values) and each suspect that turned out right.  Exit 0 when every erratum still stands\n"
+                 "and every suspect is cleared, 1 otherwise.",
+                 "quasicentral errata\nquasicentral errata --source brepta1953 --json")
     _add_text_options(e)
-    e.add_argument("--json", action="store_true")
-    e.add_argument("--no-cache", action="store_true")
+    e.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
+    e.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (default: use them)")
 
-    mu = sub.add_parser("mutate", help="seed typical typos into verified entries and measure the checker")
-    mu.add_argument("--json", action="store_true")
+    mu = _command(sub, "mutate", "seed typical typos into verified entries and measure the checker",
+                  "Mutates every verified entry as a typesetter would (sign flip, exponent, factor 2, k <-> k^2,\n"
+                  "dropped parentheses, swapped variables, t <-> s), drops the mutants sympy shows equivalent and\n"
+                  "checks the rest with the fast checker.  Takes minutes: use --per-entry for a sample.\n\n"
+                  "exit codes: 0 every mutant detected (recall 100 %) and no false alarm on the unmutated\n"
+                  "entries; 1 a mutant went undetected or an unmutated entry was refuted; 2 bad usage.",
+                  "quasicentral mutate --per-entry 3\nquasicentral mutate --source pendulum --json")
+    mu.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
     _add_text_options(mu)
-    mu.add_argument("--per-entry", type=_positive_int("--per-entry", 50), default=None,
-                    help="at most this many mutants per entry (default: all)")
+    mu.add_argument("--per-entry", type=_positive_int("--per-entry", 50), default=None, metavar="N",
+                    help="at most this many mutants per entry, 1 to 50, spread over the operators (default: all)")
+    mu.add_argument("--jobs", type=_positive_int("--jobs", 64), default=None, metavar="N",
+                    help="worker processes, 1 to 64 (default: one per core)")
 
     pe = sub.add_parser("period", help="the exact period of the simple pendulum, T and T/T0")
     amp = pe.add_mutually_exclusive_group()
@@ -89,7 +154,8 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--json", action="store_true")
 
     tr = sub.add_parser("trajectory", help="the motion of a small-swing spherical pendulum x(t), y(t)")
-    tr.add_argument("--model", required=True, metavar="MODEL")
+    tr.add_argument("--model", required=True, choices=list(MODELS), metavar="MODEL",
+                    help=f"the model: {', '.join(MODELS)}")
     tr.add_argument("--R0", required=True, metavar="X", help="initial distance from the vertical, m")
     tr.add_argument("--v0", required=True, metavar="V", help="initial speed perpendicular to R0, m/s")
     tr.add_argument("--omega2", metavar="G_OVER_L", help="Ω² = g/l, 1/s²")
@@ -107,8 +173,12 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.add_argument("--json", action="store_true")
     fmt.add_argument("--csv", action="store_true")
 
-    fg = sub.add_parser("figures", help="reproduce the texts' missing figures (CSV data and PNG plots)")
-    fg.add_argument("--out", default="figures", metavar="DIR")
+    fg = _command(sub, "figures", "reproduce the texts' missing figures (CSV data and PNG plots)",
+                  "Writes figs. 7a, 7b, 8 (and the overdamped case) and 32 as CSV data and PNG plots, and the\n"
+                  "measured charts from their committed CSVs.  Each file is written through a temporary file and\n"
+                  "a rename, only inside DIR; a symbolic link where a file would go is refused (exit 2).",
+                  "quasicentral figures\nquasicentral figures --out build/figures")
+    fg.add_argument("--out", default="figures", metavar="DIR", help="output directory, created if needed (default figures)")
 
     ch = sub.add_parser("charts", help="work–precision charts, stability maps, validity of the approximations")
     ch.add_argument("--out", default="charts", metavar="DIR", help="output directory (default charts)")
@@ -116,16 +186,28 @@ def build_parser() -> argparse.ArgumentParser:
     ch.add_argument("--only", action="append", metavar="NAME", help="only this chart (repeatable)")
     ch.add_argument("--render-only", action="store_true", help="redraw the PNGs from the CSVs in DIR, measure nothing")
 
-    rp = sub.add_parser("report", help="LaTeX reports (or handouts) regenerated from the verified derivations")
-    rp.add_argument("--out", default="reports", metavar="DIR", help="output directory (default reports)")
-    rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk")
-    rp.add_argument("--lang", choices=("en", "cs"), default="en", help="language (default en)")
+    rp = _command(sub, "report", "LaTeX reports (or handouts) regenerated from the verified derivations",
+                  "Per text, the derivation report (printed vs re-derived, verdicts, steps, errata, cleared\n"
+                  "suspects, figures, software versions) or a teaching handout with exercises, written into DIR\n"
+                  "with the figures they include (only inside DIR, never through a symbolic link).  --pdf compiles\n"
+                  "each with latexmk and exits 1 naming the log on a LaTeX error or an undefined reference; a\n"
+                  "failed run removes the job's auxiliary files, so a stale .aux never blocks the next one.",
+                  "quasicentral report --out build/reports --pdf\n"
+                  "quasicentral report --handout --lang cs\n"
+                  "quasicentral report --all --out reports      # regenerate the golden files")
+    rp.add_argument("--out", default="reports", metavar="DIR", help="output directory, created if needed (default reports)")
+    rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk (default: LaTeX only)")
+    rp.add_argument("--lang", choices=("en", "cs"), default=None, help="language: en or cs (default en)")
     rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
     rp.add_argument("--all", action="store_true",
                     help="every golden document: reports and handouts, English and Czech")
     _add_text_options(rp, source=False)
 
-    nt = sub.add_parser("new-text", help="write the skeleton of a new text (a folder) that verifies at once")
+    nt = _command(sub, "new-text", "write the skeleton of a text of your own (a folder) that verifies at once",
+                  "Writes DIR/text.toml (the text's id, title, language and symbol table), DIR/catalog/ (what is\n"
+                  "printed, transcribed), DIR/errata/ (one recorded erratum as an example) and DIR/motion.py (the\n"
+                  "derivations).  Edit them into your own text; README: \"Verify your own derivation\".",
+                  "quasicentral new-text mynotes\nquasicentral verify --text mynotes")
     nt.add_argument("dir", metavar="DIR", help="the new text's folder (must not exist, or be empty)")
     nt.add_argument("--id", dest="text_id", metavar="ID", help="the text's id (default: the folder's name)")
 
@@ -134,25 +216,72 @@ def build_parser() -> argparse.ArgumentParser:
     sc.add_argument("--json", action="store_true")
     sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
 
-    c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
+    c = _command(sub, "catalog", "list the catalog: ids, dimensions, LaTeX-parser coverage",
+                 "Lists every entry with its id (for verify --id), section and dimensions, and which of sympy's\n"
+                 "LaTeX parsers read its printed form back correctly.",
+                 "quasicentral catalog\nquasicentral catalog --source pendulum --json")
     _add_text_options(c)
-    c.add_argument("--json", action="store_true")
+    c.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
     return p
+
+
+class _QuietPipe:
+    """``sys.stdout`` while a command runs: once the reader has closed the pipe, the rest of the
+    output goes to /dev/null and the command finishes with its own exit code."""
+
+    def __init__(self, stream):
+        self._stream = stream
+        self.broken = False
+
+    def _break(self) -> None:
+        self.broken = True
+        try:  # the interpreter flushes the real stdout at exit: point its descriptor at /dev/null
+            fd = self._stream.fileno()
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, fd)
+            os.close(null)
+        except (OSError, ValueError, AttributeError, io.UnsupportedOperation):
+            pass
+
+    def write(self, text: str) -> int:
+        if not self.broken:
+            try:
+                return self._stream.write(text)
+            except BrokenPipeError:
+                self._break()
+        return len(text)
+
+    def flush(self) -> None:
+        if not self.broken:
+            try:
+                self._stream.flush()
+            except BrokenPipeError:
+                self._break()
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
+    out = sys.stdout
+    quiet = sys.stdout = _QuietPipe(out)
     try:
         args = parser.parse_args(argv)
         if args.command is None:
             raise UsageError(f"a command is required: {', '.join(sorted(_COMMANDS))} (see --help)")
-        return _COMMANDS[args.command](args)
+        code = _COMMANDS[args.command](args)
+        sys.stdout.flush()
+        return code
     except UsageError as exc:
         print(f"quasicentral: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
         print("quasicentral: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # a write that bypassed sys.stdout: the command's own code is lost
+        quiet._break()
+        return EXIT_OK
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
         from quasicentral.engine.catalog import CatalogError
 
@@ -161,15 +290,103 @@ def main(argv: list[str] | None = None) -> int:
             return EXIT_USAGE
         print(f"quasicentral: internal error: {type(exc).__name__}: {exc}", file=sys.stderr)
         return EXIT_UNEXPECTED
+    finally:
+        if sys.stdout is quiet:
+            sys.stdout = out
 
 
-def _texts(args) -> list:
-    """The texts a command works on: --text folders or ids (default the shipped ones), loaded."""
+# --- progress on stderr ----------------------------------------------------------------------
+def show_progress(args=None, stream=None, environ=None) -> bool:
+    """Whether to draw a progress bar: stderr is a terminal, ``CI`` is not set (to anything but
+    "", "0" or "false") and ``--json`` was not asked for."""
+    stream = sys.stderr if stream is None else stream
+    environ = os.environ if environ is None else environ
+    if args is not None and getattr(args, "json", False):
+        return False
+    if environ.get("CI", "").strip().lower() not in ("", "0", "false", "no"):
+        return False
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError, OSError):
+        return False
+
+
+class ProgressBar:
+    """The callback the CLI hands to library functions: draws a tqdm bar on stderr when
+    :func:`show_progress` says so, and always keeps the last record (for the timing line)."""
+
+    mininterval = 0.2  # seconds between redraws
+
+    def __init__(self, args, label: str, stream=None, enabled: bool | None = None):
+        self.stream = sys.stderr if stream is None else stream
+        self.enabled = show_progress(args, self.stream) if enabled is None else enabled
+        self.label = label
+        self.last = None
+        self._bar = None
+        self._phase = None
+
+    def __call__(self, rec) -> None:
+        self.last = rec
+        if not self.enabled:
+            return
+        from tqdm import tqdm
+
+        if self._bar is None or rec.phase != self._phase:
+            self.close()
+            self._phase = rec.phase
+            size = self._size()
+            self._bar = tqdm(total=rec.total, initial=rec.done, desc=self.label, unit=f" {rec.phase or 'items'}",
+                             file=self.stream, dynamic_ncols=size is None, ncols=size and size[0],
+                             nrows=size and size[1], leave=False, mininterval=self.mininterval,
+                             bar_format="{desc}: {n_fmt}/{total_fmt}{unit} {bar} [{elapsed}<{remaining}{postfix}]")
+        self._bar.total = rec.total
+        if rec.current:
+            done = "read from the cache" if rec.current == "cache" else f"last done: {rec.current}"
+            self._bar.set_postfix_str(done, refresh=False)
+        if rec.done > self._bar.n:
+            self._bar.update(rec.done - self._bar.n)
+        else:
+            self._bar.refresh()
+
+    def _size(self) -> tuple[int, int] | None:
+        """None to follow the terminal's size; 80 × 24 when it reports none (a pty without a size)."""
+        try:
+            size = os.get_terminal_size(self.stream.fileno())
+        except (OSError, ValueError, AttributeError, io.UnsupportedOperation):
+            return 80, 24
+        return None if size.columns > 0 and size.lines > 0 else (80, 24)
+
+    def close(self) -> None:
+        if self._bar is not None:
+            self._bar.close()
+            self._bar = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+def _entries(n: int) -> str:
+    return f"{n} entr{'y' if n == 1 else 'ies'}"
+
+
+def _timing(args, text: str) -> None:
+    """The line that says what was timed (stderr; not with --json)."""
+    if not getattr(args, "json", False):
+        print(text, file=sys.stderr)
+
+
+# --- the verification commands ---------------------------------------------------------------
+def _texts(args, source_filter: bool = True) -> list:
+    """The texts a command works on: --text folders or ids (default the shipped ones), loaded;
+    narrowed to --source unless ``source_filter`` is false."""
     from quasicentral.engine import texts
 
     selected = texts.resolve(getattr(args, "texts", None))
     source = getattr(args, "source", None)
-    if source is not None:
+    if source is not None and source_filter:
         chosen = [t for t in selected if t.id == source]
         if not chosen:
             raise UsageError(f"--source {source}: no such text among {', '.join(t.id for t in selected)}")
@@ -180,15 +397,24 @@ def _texts(args) -> list:
 def _selected(args):
     from quasicentral.engine import texts
 
-    selected = _texts(args)
-    entries = texts.entries(selected)
+    everything = texts.entries(_texts(args, source_filter=False))
+    source = getattr(args, "source", None)
+    entries = [e for e in everything if source is None or e.text == source]
+    if source is not None and not entries:
+        raise UsageError(f"--source {source}: no such text among {', '.join(sorted({e.text for e in everything}))}")
     ids = getattr(args, "ids", None)
     if ids:
-        known = {e.id for e in entries}
+        known = {e.id for e in everything}
         for i in ids:
             if i not in known:
-                raise UsageError(f"--id {i}: no such entry in {', '.join(t.id for t in selected)}")
+                raise UsageError(f"--id: unknown equation id {i!r} (see `quasicentral catalog`)")
+        in_source = {e.id for e in entries}
+        outside = [i for i in ids if i not in in_source]
+        if outside:
+            raise UsageError(f"--id {outside[0]} is not in --source {source}: the selection would leave it out")
         entries = [e for e in entries if e.id in set(ids)]
+    if not entries:
+        raise UsageError("nothing selected: check --text, --source and --id")
     return entries
 
 
@@ -197,22 +423,27 @@ def _verify(args) -> int:
     from quasicentral.engine import run as verify
     from quasicentral.engine.checker import Options
 
+    if args.junit is not None and not args.junit.strip():
+        raise UsageError("--junit needs a file name")
     try:
         opts = Options(dps=args.dps)  # the ladder's floor is the checker's (Options.MIN_DPS)
     except ValueError as exc:
         raise UsageError(f"--dps: {exc}") from None
     entries = _selected(args)
     t0 = time.perf_counter()
-    outcomes = verify.run(entries, opts, use_cache=not args.no_cache, jobs=args.jobs)
+    with ProgressBar(args, "verify") as bar:
+        outcomes = verify.run(entries, opts, use_cache=not args.no_cache, jobs=args.jobs, progress=bar)
     seconds = time.perf_counter() - t0
     doc = output.verify_document(entries, outcomes)
     if args.junit:
-        _write_atomic(Path(args.junit), output.junit_xml(entries, outcomes))
+        _write_atomic(Path(args.junit), output.junit_xml(entries, outcomes), "--junit")
     if args.json:
         print(json.dumps(doc, indent=2, sort_keys=False, ensure_ascii=False))
     else:
         print(output.verify_table(doc))
-        print(f"({seconds:.1f} s)", file=sys.stderr)
+    cached = bar.last.cached if bar.last else 0
+    _timing(args, f"verify: checked {_entries(len(entries))} in {seconds:.1f} s "
+                  f"(computed: {len(entries) - cached}, read from the cache: {cached})")
     return EXIT_OK if doc["summary"]["ok"] else EXIT_UNEXPECTED
 
 
@@ -222,7 +453,8 @@ def _errata(args) -> int:
     from quasicentral.engine.checker import Options
 
     entries = _selected(args)
-    outcomes = verify.run(entries, Options(), use_cache=not args.no_cache)
+    with ProgressBar(args, "errata") as bar:
+        outcomes = verify.run(entries, Options(), use_cache=not args.no_cache, progress=bar)
     doc = output.errata_document(entries, outcomes)
     if args.json:
         print(json.dumps(doc, indent=2, ensure_ascii=False))
@@ -234,11 +466,15 @@ def _errata(args) -> int:
 def _mutate(args) -> int:
     from quasicentral.engine import mutate
 
-    res = mutate.run(_texts(args), per_entry=args.per_entry)
+    t0 = time.perf_counter()
+    with ProgressBar(args, "mutate") as bar:
+        res = mutate.run(_texts(args), per_entry=args.per_entry, jobs=args.jobs, progress=bar)
+    seconds = time.perf_counter() - t0
     if args.json:
         print(json.dumps(res, indent=2, ensure_ascii=False))
     else:
         print(mutate.table(res))
+    _timing(args, f"mutate: {res['mutants']} mutants of {_entries(res['entries'])} checked in {seconds:.1f} s")
     return EXIT_OK if res["recall"] == 1.0 and res["false_alarms"] == 0 else EXIT_UNEXPECTED
 
 
@@ -247,24 +483,38 @@ def _catalog(args) -> int:
     from quasicentral.engine import formats as output
 
     entries = _selected(args)
-    cov = latexparse.coverage(entries)
+    t0 = time.perf_counter()
+    with ProgressBar(args, "catalog") as bar:
+        cov = latexparse.coverage(entries, progress=bar)
+    seconds = time.perf_counter() - t0
     doc = output.catalog_document(entries, cov)
     if args.json:
         print(json.dumps(doc, indent=2, ensure_ascii=False))
     else:
         print(output.catalog_table(doc))
+    _timing(args, f"catalog: parsed the LaTeX of {_entries(len(entries))} in {seconds:.1f} s")
     return EXIT_OK
 
 
-def _write_atomic(path: Path, text: str) -> None:
-    """Write via a temporary file and rename, so a failure never leaves a half-written file."""
-    from quasicentral.files import write_text
+def _write_atomic(path: Path, text: str, option: str = "") -> None:
+    """Write via a temporary file and rename, so a failure never leaves a half-written file;
+    a symbolic link at ``path`` is refused."""
+    from quasicentral.files import UnsafePath, write_text
 
+    name = f"{option} " if option else ""
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         write_text(path, text)
+    except UnsafePath as exc:
+        raise UsageError(f"{name}{exc}") from None
     except OSError as exc:
-        raise UsageError(f"cannot write {path}: {exc.strerror}") from None
+        raise UsageError(f"{name}cannot write {path}: {exc.strerror or exc}") from None
+
+
+def _out_dir(args) -> Path:
+    if not args.out.strip():
+        raise UsageError("--out needs a directory name")
+    return Path(args.out)
 
 
 def _period(args) -> int:
@@ -458,12 +708,17 @@ def _scene(args) -> int:
 
 
 def _figures(args) -> int:
+    from quasicentral.files import UnsafePath
     from quasicentral.studies import figures
 
+    out = _out_dir(args)
     try:
-        paths = figures.write_all(Path(args.out))
+        with ProgressBar(args, "figures") as bar:
+            paths = figures.write_all(out, progress=bar)
+    except UnsafePath as exc:
+        raise UsageError(f"--out: {exc}") from None
     except OSError as exc:
-        raise UsageError(f"cannot write figures to {args.out}: {exc.strerror}") from None
+        raise UsageError(f"--out: cannot write figures to {args.out}: {exc.strerror or exc}") from None
     for p in paths:
         print(p)
     return EXIT_OK
@@ -471,36 +726,49 @@ def _figures(args) -> int:
 
 def _report(args) -> int:
     from quasicentral.documents import report
+    from quasicentral.files import UnsafePath
 
-    if args.all and (args.handout or args.lang != "en"):
+    if args.all and (args.handout or args.lang is not None):
         raise UsageError("--all writes every document: leave out --handout and --lang")
-    out = Path(args.out)
+    out = _out_dir(args)
     try:
         report.check_writable(out)
+    except UnsafePath as exc:
+        raise UsageError(f"--out: {exc}") from None
     except OSError as exc:
-        raise UsageError(f"cannot write to {args.out}: {exc.strerror or exc}") from None
+        raise UsageError(f"--out: cannot write to {args.out}: {exc.strerror or exc}") from None
+    _texts(args)  # the texts named by --text (default: the shipped ones) are the ones built
     if args.all:
         jobs = list(report.GOLDEN)
     else:
-        jobs = [(("handout",) if args.handout else ("report",), (args.lang,))]
-    outcomes = report.outcomes_for_all()
-    docs: dict[str, str] = {}
-    for kinds, langs in jobs:
-        docs.update(report.generate(kinds, langs, outcomes))
-    try:
-        paths = report.write(out, dict(sorted(docs.items())))
-    except OSError as exc:
-        raise UsageError(f"cannot write to {args.out}: {exc.strerror or exc}") from None
+        jobs = [(("handout",) if args.handout else ("report",), (args.lang or "en",))]
+    t0 = time.perf_counter()
+    with ProgressBar(args, "report") as bar:
+        outcomes = report.outcomes_for_all(progress=bar)
+        docs: dict[str, str] = {}
+        for kinds, langs in jobs:
+            docs.update(report.generate(kinds, langs, outcomes))
+        try:
+            paths = report.write(out, dict(sorted(docs.items())), progress=bar)
+        except UnsafePath as exc:
+            raise UsageError(f"--out: {exc}") from None
+        except OSError as exc:
+            raise UsageError(f"--out: cannot write to {args.out}: {exc.strerror or exc}") from None
     for p in paths:
         print(p)
     if args.pdf:
         try:
-            pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE])
+            with ProgressBar(args, "report") as bar:
+                pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE], progress=bar)
+        except UnsafePath as exc:
+            raise UsageError(f"--out: {exc}") from None
         except report.LatexError as exc:
             print(f"quasicentral: error: {exc}", file=sys.stderr)
             return EXIT_UNEXPECTED
         for p in pdfs:
             print(p)
+    _timing(args, f"report: wrote {len(paths)} files{' and compiled them' if args.pdf else ''} "
+                  f"in {time.perf_counter() - t0:.1f} s")
     return EXIT_OK
 
 
@@ -520,7 +788,8 @@ def _charts(args) -> int:
                 raise UsageError(f"no chart data (CSV) in {args.out}")
             paths = charts.render_all(out)
         else:
-            paths = charts.build(out, quick=args.quick, only=args.only)
+            with ProgressBar(args, "charts") as bar:
+                paths = charts.build(out, quick=args.quick, only=args.only, progress=bar)
     except OSError as exc:
         raise UsageError(f"cannot write charts to {args.out}: {exc.strerror or exc}") from None
     except charts.ChartError as exc:

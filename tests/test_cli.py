@@ -24,6 +24,9 @@ def run(*args):
     ["verify", "--dps", "nan"],
     ["verify", "--bogus"],
     ["verify", "--id", "brepta1953:999"],
+    ["verify", "--source", "pendulum", "--id", "brepta1953:4"],
+    ["verify", "--junit", ""],
+    ["mutate", "--per-entry", "0"],
     ["nosuchcommand"],
     [],
 ])
@@ -84,3 +87,20 @@ def test_verify_is_deterministic(outcomes, capsys):
     first = capsys.readouterr().out
     main(["verify", "--json", "--source", "pendulum"])
     assert capsys.readouterr().out == first
+
+
+def test_timing_line_says_what_it_times(tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
+    assert main(["verify", "--id", "brepta1953:1"]) == 0
+    assert "verify: checked 1 entry in" in capsys.readouterr().err
+    assert main(["verify", "--id", "brepta1953:1"]) == 0
+    err = capsys.readouterr().err
+    assert err.startswith("verify: checked 1 entry in") and "(computed: 0, read from the cache: 1)" in err, err
+    assert main(["verify", "--id", "brepta1953:1", "--json"]) == 0
+    assert capsys.readouterr().err == ""  # --json: quiet
+
+
+def test_version_flag(capsys):
+    with pytest.raises(SystemExit) as info:
+        main(["--version"])
+    assert info.value.code == 0 and capsys.readouterr().out.startswith("quasicentral ")

@@ -329,7 +329,7 @@ def test_failed_write_leaves_old_files_whole(tmp_path, monkeypatch):
 def test_pdf_failure_is_exit_1_with_log(tmp_path, monkeypatch, capsys):
     if shutil.which("latexmk") is None:
         pytest.skip("latexmk not installed")
-    monkeypatch.setattr(report, "outcomes_for_all", lambda: {})
+    monkeypatch.setattr(report, "outcomes_for_all", lambda progress=None: {})
     monkeypatch.setattr(report, "generate", lambda kinds, langs, outcomes: {
         "broken-report-en.tex": "\\documentclass{article}\\begin{document}\\ref{nowhere}\\end{document}\n"})
     code = main(["report", "--pdf", "--out", str(tmp_path)])

@@ -38,6 +38,7 @@ from quasicentral.engine import errata as errata_mod
 from quasicentral.studies import figures as figures_mod
 
 from quasicentral.engine import formats as output
+from quasicentral import files
 from quasicentral.files import write_atomic
 from quasicentral.documents.latex import display_rows, escape, paper_latex, relation_lines, text, with_math, wrap_row
 from quasicentral.documents.prose import FIGURE_CAPTIONS, KINDS_CS, LANGS, SECTIONS, TEXTS, WORDS, join_refs
@@ -644,13 +645,14 @@ def file_names(kinds=KINDS, langs=LANGS) -> list[str]:
     return [f"{t.id}-{kind}-{lang}.tex" for kind in kinds for lang in langs for t in texts.active()]
 
 
-def outcomes_for_all() -> dict[str, Outcome]:
-    """Verdicts of every catalog entry (read from the verification cache when it is warm)."""
+def outcomes_for_all(progress=None) -> dict[str, Outcome]:
+    """Verdicts of every catalog entry (read from the verification cache when it is warm);
+    ``progress`` is passed to :func:`quasicentral.engine.run.run`."""
     from quasicentral.engine import run as verify
     from quasicentral.engine.checker import Options
 
     entries = texts.entries(texts.active())
-    return dict(zip([e.id for e in entries], verify.run(entries, Options(), use_cache=True)))
+    return dict(zip([e.id for e in entries], verify.run(entries, Options(), use_cache=True, progress=progress)))
 
 
 def generate(kinds=("report",), langs=("en",), outcomes: dict[str, Outcome] | None = None) -> dict[str, str]:
@@ -674,16 +676,18 @@ def figures_needed(docs: dict[str, str]) -> list[FigureItem]:
 
 
 def check_writable(out: Path) -> None:
-    """Raise OSError when ``out`` cannot be created or written to (before anything is written)."""
-    out.mkdir(parents=True, exist_ok=True)
-    probe = out / ".quasicentral-write-test.tmp"
-    probe.write_text("")
-    probe.unlink()
+    """Raise OSError when ``out`` cannot be created or written to (before anything is written);
+    a symbolic link where a file or folder would be written is refused (files.UnsafePath)."""
+    files.check_writable(out)
 
 
-def write(out: Path, docs: dict[str, str]) -> list[Path]:
+def write(out: Path, docs: dict[str, str], progress=None) -> list[Path]:
     """Write the documents and the figures they include (each via a temporary file and a rename,
-    so that a failure never leaves a half-written file).  Returns the paths, sorted."""
+    so that a failure never leaves a half-written file; only inside ``out``, never through a
+    symbolic link).  ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told
+    of each figure drawn.  Returns the paths, sorted."""
+    from quasicentral.progress import notify
+
     check_writable(out)
     written = []
 
@@ -692,12 +696,14 @@ def write(out: Path, docs: dict[str, str]) -> list[Path]:
         written.append(path)
 
     for name, tex in docs.items():
-        put(out / name, lambda tmp, tex=tex: tmp.write_text(tex, encoding="utf-8"))
+        put(files.inside(out, name), lambda tmp, tex=tex: tmp.write_text(tex, encoding="utf-8"))
     figs = figures_needed(docs)
     if figs:
-        (out / FIGURE_DIR).mkdir(exist_ok=True)
-    for f in figs:
-        put(out / f.path, lambda tmp, f=f: figures_mod.draw(f.make(), tmp))
+        files.ensure_dir(files.inside(out, FIGURE_DIR))
+    notify(progress, 0, len(figs), "", 0, "figures")
+    for i, f in enumerate(figs):
+        put(files.inside(out, f.path), lambda tmp, f=f: figures_mod.draw(f.make(), tmp))
+        notify(progress, i + 1, len(figs), f.path, 0, "figures")
     return sorted(written)
 
 
@@ -724,27 +730,61 @@ def compile_one(out: Path, name: str) -> Path:
     """``latexmk -pdf`` one document in ``out``; raise :class:`LatexError` on any LaTeX error
     or undefined reference.  Returns the PDF's path."""
     stem = name[:-4]
+    for suffix in (".pdf", ".log") + AUX_SUFFIXES:  # LaTeX would write through a link
+        files.inside(out, stem + suffix)
     log = out / f"{stem}.log"
     env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1"}
     cmd = ["latexmk", "-norc", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",
            "-silent", name]
-    try:
-        proc = subprocess.run(cmd, cwd=out, capture_output=True, text=True, env=env, timeout=600)
-    except FileNotFoundError:
-        raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
-    except subprocess.TimeoutExpired:
-        raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
-    problems = log_problems(log.read_text(encoding="utf-8", errors="replace")) if log.is_file() else []
+    for _attempt in (1, 2):
+        try:
+            proc = subprocess.run(cmd, cwd=out, capture_output=True, text=True, env=env, timeout=600)
+        except FileNotFoundError:
+            raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
+        except subprocess.TimeoutExpired:
+            clean_job(out, stem)
+            raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
+        problems = log_problems(log.read_text(encoding="utf-8", errors="replace")) if log.is_file() else []
+        if proc.returncode == 0 and not problems:
+            break
+        # a stale or broken .aux (or latexmk's database) from an earlier run makes every later
+        # run fail: remove this job's auxiliary files (the log is kept) and try once from scratch
+        clean_job(out, stem)
     if proc.returncode != 0 or problems:
         first = problems[0] if problems else f"latexmk exited with {proc.returncode}"
         raise LatexError(f"LaTeX failed on {name} ({first[:160]}): see {log}", log)
     return out / f"{stem}.pdf"
 
 
-def compile_all(out: Path, names: list[str], jobs: int | None = None) -> list[Path]:
-    """Compile the documents (in parallel); the first failure raises :class:`LatexError`."""
+#: What a LaTeX run leaves beside the document that a later run reads back (the log is kept).
+AUX_SUFFIXES = (".aux", ".toc", ".out", ".lof", ".lot", ".nav", ".snm", ".bbl", ".blg", ".fls", ".fdb_latexmk",
+                ".synctex.gz")
+
+
+def clean_job(out: Path, stem: str) -> list[Path]:
+    """Remove the auxiliary files of the job ``stem`` in ``out`` (what would make the next run
+    fail again); returns those removed.  Symbolic links are removed, never followed."""
+    removed = []
+    for suffix in AUX_SUFFIXES:
+        path = out / f"{stem}{suffix}"
+        if os.path.lexists(path) and not path.is_dir():
+            path.unlink()
+            removed.append(path)
+    return removed
+
+
+def compile_all(out: Path, names: list[str], jobs: int | None = None, progress=None) -> list[Path]:
+    """Compile the documents (in parallel); the first failure raises :class:`LatexError`.
+    ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told of each PDF."""
+    from quasicentral.progress import notify
+
     names = [n for n in names if n != VERSIONS_FILE]
     jobs = jobs or min(len(names), os.cpu_count() or 1) or 1
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(compile_one, out, n) for n in names]
-        return [f.result() for f in futures]
+        pdfs = []
+        notify(progress, 0, len(names), "", 0, "PDFs")
+        for name, f in zip(names, futures):
+            pdfs.append(f.result())
+            notify(progress, len(pdfs), len(names), name, 0, "PDFs")
+        return pdfs

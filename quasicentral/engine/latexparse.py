@@ -123,11 +123,16 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
     return True
 
 
-def coverage(entries: list[Entry]) -> dict:
-    """Per entry, which backends read it correctly; and the totals."""
+def coverage(entries: list[Entry], progress=None) -> dict:
+    """Per entry, which backends read it correctly; and the totals.  ``progress`` (a
+    :class:`quasicentral.progress.Progress` callback) is told of each entry."""
+    from quasicentral.progress import notify
+
     per: dict[str, dict[str, bool]] = {}
-    for e in entries:
+    notify(progress, 0, len(entries), "", 0, "entries parsed")
+    for i, e in enumerate(entries):
         per[e.id] = {b: parse_agrees(e, b) for b in BACKENDS}
+        notify(progress, i + 1, len(entries), e.id, 0, "entries parsed")
     summary = {"entries": len(entries), **{b: sum(v[b] for v in per.values()) for b in BACKENDS},
                "any": sum(any(v.values()) for v in per.values())}
     return {"entries": per, "summary": summary}

@@ -12,9 +12,8 @@ same fast checker refutes unmutated (target 0).
 from __future__ import annotations
 
 import os
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import as_completed
 from dataclasses import dataclass
-from multiprocessing import get_context
 
 import sympy as sp
 
@@ -23,6 +22,7 @@ from quasicentral.engine.checker import Options, check
 from quasicentral.engine.registry import REGISTRY, derived
 from quasicentral.engine.verdict import Refuted
 from quasicentral.notation.symbols import SymbolTable
+from quasicentral.progress import OptionalCallback, notify
 
 FAST = Options(points=10, symbolic=False, certify=False)
 
@@ -198,18 +198,31 @@ def verified_entries(selected: list[texts.Text]) -> list[str]:
 
 
 def run(selected: list[texts.Text] | None = None, per_entry: int | None = None, ids: list[str] | None = None,
-        jobs: int | None = None) -> dict:
+        jobs: int | None = None, progress: OptionalCallback = None) -> dict:
     """Mutation testing over the verified entries of ``selected`` (default: the shipped texts)
-    or over ``ids``."""
+    or over ``ids``.  ``progress``, if given, is called with a
+    :class:`quasicentral.progress.Progress` at the start and after each entry."""
+    from quasicentral.engine.run import worker_pool
+
     selected = texts.activate(selected if selected is not None else texts.shipped())
     ids = ids if ids is not None else verified_entries(selected)
     jobs = jobs or min(len(ids), os.cpu_count() or 1) or 1
     work = [(i, per_entry) for i in ids]
+    notify(progress, 0, len(work), "", 0, "entries mutated")
+    by_id = {}
     if jobs > 1:
-        with ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("fork")) as pool:
-            results = list(pool.map(_run_entry, work, chunksize=1))
+        with worker_pool(jobs) as pool:
+            futures = [pool.submit(_run_entry, w) for w in work]
+            for fut in as_completed(futures):
+                res = fut.result()
+                by_id[res[0]] = res
+                notify(progress, len(by_id), len(work), res[0], 0, "entries mutated")
     else:
-        results = [_run_entry(w) for w in work]
+        for w in work:
+            res = _run_entry(w)
+            by_id[res[0]] = res
+            notify(progress, len(by_id), len(work), res[0], 0, "entries mutated")
+    results = [by_id[i] for i in ids]
     rows = [r for _, _, rs in results for r in rs]
     false_alarms = [eid for eid, alarmed, _ in results if alarmed]
     detected = sum(r["detected"] for r in rows)

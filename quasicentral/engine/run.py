@@ -12,7 +12,10 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-from concurrent.futures import ProcessPoolExecutor
+import signal
+import sys
+import threading
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import asdict
 from multiprocessing import get_context
 from pathlib import Path
@@ -22,6 +25,7 @@ from quasicentral.engine.checker import Options, check
 from quasicentral.engine.registry import REGISTRY
 from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Status, Verdict, Verified
 from quasicentral.files import write_text
+from quasicentral.progress import OptionalCallback, notify
 
 CACHE_VERSION = "2"  # 2: texts as folders, keys per text
 
@@ -94,8 +98,50 @@ def _worker(args):
     return eid, _outcome_json(verify_entry(texts.entry(eid), opts))
 
 
-def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None) -> list[Outcome]:
-    """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed)."""
+PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
+
+
+def _die_with_parent(parent: int) -> None:
+    """Worker initializer: end this process when ``parent`` ends, even by ``kill -9``.
+
+    On Linux the kernel sends SIGKILL when the parent dies (``prctl(PR_SET_PDEATHSIG)``); as a
+    fallback (other systems, or no libc) a daemon thread checks every second whether the process
+    has been re-parented."""
+    if sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        except (OSError, AttributeError):
+            pass
+    if os.getppid() != parent:  # the parent died before the signal was armed
+        os._exit(1)
+
+    def watch() -> None:
+        import time
+
+        while True:
+            time.sleep(1.0)
+            if os.getppid() != parent:
+                os._exit(1)
+
+    threading.Thread(target=watch, name="quasicentral-parent-watch", daemon=True).start()
+
+
+def worker_pool(jobs: int) -> ProcessPoolExecutor:
+    """A pool of ``jobs`` forked workers that end with this process (see :func:`_die_with_parent`)."""
+    return ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("fork"),
+                               initializer=_die_with_parent, initargs=(os.getpid(),))
+
+
+def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None,
+        progress: OptionalCallback = None) -> list[Outcome]:
+    """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed).
+
+    ``progress``, if given, is called with a :class:`quasicentral.progress.Progress` once the
+    cache has been read (``done`` = ``cached`` = the entries read back) and after each computed
+    entry (``current`` = its id); it is called in this process, never in a worker."""
     fp = code_fingerprint()
     text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
     key_of = {e.id: hashlib.sha256(json.dumps([fp, text_fp[e.text], e.id, asdict(opts)], sort_keys=True).encode()
@@ -111,6 +157,8 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
                 except (OSError, ValueError):
                     pass
     todo = [e.id for e in entries if e.id not in results]
+    cached = len(results)
+    notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries")
     if todo:
         jobs = jobs or min(len(todo), os.cpu_count() or 1)
         if jobs > 1 and len(todo) > 1:
@@ -118,12 +166,16 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
             import sympy as sp
 
             by_cost = sorted(todo, key=lambda i: not texts.entry(i).printed.has(sp.Integral))
-            with ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("fork")) as pool:
-                for eid, res in pool.map(_worker, [(i, opts) for i in by_cost], chunksize=1):
+            with worker_pool(jobs) as pool:
+                futures = [pool.submit(_worker, (i, opts)) for i in by_cost]
+                for fut in as_completed(futures):
+                    eid, res = fut.result()
                     results[eid] = res
+                    notify(progress, len(results), len(entries), eid, cached, "entries")
         else:
             for eid in todo:
                 results[eid] = _worker((eid, opts))[1]
+                notify(progress, len(results), len(entries), eid, cached, "entries")
         try:
             cdir.mkdir(parents=True, exist_ok=True)
             for eid in todo:

@@ -937,8 +937,11 @@ _MAPS = {
 }
 
 
-def build(out: Path, quick: bool = False, only: list[str] | None = None) -> list[Path]:
-    """Measure, write each CSV, then render each PNG from its CSV.  Returns the paths written."""
+def build(out: Path, quick: bool = False, only: list[str] | None = None, progress=None) -> list[Path]:
+    """Measure, write each CSV, then render each PNG from its CSV.  Returns the paths written.
+    ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told of each chart."""
+    from quasicentral.progress import notify
+
     settings = Settings(quick=quick)
     out.mkdir(parents=True, exist_ok=True)
     wanted = list(only) if only else list(CHARTS)
@@ -948,6 +951,7 @@ def build(out: Path, quick: bool = False, only: list[str] | None = None) -> list
     base = machine()
     base["mode"] = "quick" if quick else "full"
     written = []
+    notify(progress, 0, len(wanted), "", 0, "charts")
     for name in wanted:
         if name.startswith("workprecision-"):
             q = name.removeprefix("workprecision-")
@@ -967,6 +971,7 @@ def build(out: Path, quick: bool = False, only: list[str] | None = None) -> list
         write_csv(csv_path, rows, header)
         render(csv_path, png_path)
         written += [csv_path, png_path]
+        notify(progress, len(written) // 2, len(wanted), name, 0, "charts")
     return written
 
 

@@ -171,17 +171,24 @@ def render(fig: Figure, path: Path) -> None:
         plt.close(figure)
 
 
-def write_all(out: Path) -> list[Path]:
-    """Write every figure's CSV and PNG into ``out``; returns the paths written."""
-    out.mkdir(parents=True, exist_ok=True)
+def write_all(out: Path, progress=None) -> list[Path]:
+    """Write every figure's CSV and PNG into ``out`` (each via a temporary file and a rename,
+    never through a symbolic link: quasicentral.files); returns the paths written.
+    ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told of each figure."""
+    from quasicentral import files
+    from quasicentral.progress import notify
+
+    files.output_dir(out)
     written = []
-    for make in ALL:
+    notify(progress, 0, len(ALL), "", 0, "figures")
+    for i, make in enumerate(ALL):
         fig = make()
-        csv_path, png_path = out / f"{fig.name}.csv", out / f"{fig.name}.png"
+        csv_path, png_path = files.inside(out, f"{fig.name}.csv"), files.inside(out, f"{fig.name}.png")
         if isinstance(fig, MeasuredChart):
-            csv_path.write_bytes((MEASUREMENTS / f"{fig.name}.csv").read_bytes())
+            files.write_bytes(csv_path, (MEASUREMENTS / f"{fig.name}.csv").read_bytes())
         else:
-            csv_path.write_text(to_csv(fig), encoding="utf-8")
-        draw(fig, png_path)
+            files.write_text(csv_path, to_csv(fig))
+        files.write_atomic(png_path, lambda tmp, fig=fig: draw(fig, tmp))
         written += [csv_path, png_path]
+        notify(progress, i + 1, len(ALL), fig.name, 0, "figures")
     return written
