@@ -92,9 +92,9 @@ class _ClosedPipe(io.StringIO):
 @pytest.mark.parametrize("command", ["errata", "catalog", "verify"])
 def test_closed_pipe_in_process(command, cache, monkeypatch, capsys):
     """errata and catalog read the whole catalog: here a small selection stands in for it."""
-    from quasicentral.engine import catalog
+    from quasicentral.engine import texts
 
-    few = [catalog.get("brepta1953:1"), catalog.get("brepta1953:4")]
+    few = [texts.entry("brepta1953:1"), texts.entry("brepta1953:4")]
     monkeypatch.setattr(cli, "_selected", lambda args: few)
     monkeypatch.setattr(sys, "stdout", _ClosedPipe())
     code = main([command])
@@ -104,10 +104,10 @@ def test_closed_pipe_in_process(command, cache, monkeypatch, capsys):
 
 def test_a_result_still_fails_when_the_pipe_is_closed(cache, monkeypatch):
     """The reader going away does not turn an unexpected result into a success."""
-    from quasicentral.engine import catalog, run
+    from quasicentral.engine import run, texts
     from quasicentral.engine.verdict import Inconclusive, Method, Outcome
 
-    few = [catalog.get("brepta1953:1")]
+    few = [texts.entry("brepta1953:1")]
     monkeypatch.setattr(cli, "_selected", lambda args: few)
     bad = Outcome("brepta1953:1", Inconclusive(Method.NONE, "stand-in"), "unexpected", problems=("stand-in",))
     monkeypatch.setattr(run, "run", lambda *a, **k: [bad])
@@ -421,10 +421,10 @@ def test_progress_bar_disabled_draws_nothing_but_keeps_the_count():
 
 
 def test_verify_reports_progress(cache):
-    from quasicentral.engine import catalog, run
+    from quasicentral.engine import run, texts
     from quasicentral.engine.checker import Options
 
-    entries = [catalog.get("brepta1953:1"), catalog.get("brepta1953:4")]
+    entries = [texts.entry("brepta1953:1"), texts.entry("brepta1953:4")]
     seen: list[Progress] = []
     run.run(entries, Options(), use_cache=False, jobs=1, progress=seen.append)
     assert [(p.done, p.total) for p in seen] == [(0, 2), (1, 2), (2, 2)]

@@ -315,8 +315,11 @@ def resolve(specs: list[str] | None) -> list[Text]:
 _ACTIVE: dict[str, Text] = {}
 
 
-def activate(texts: list[Text]) -> list[Text]:
-    """Make ``texts`` the ones ids are looked up in (their derivations imported)."""
+def activate(texts: list[Text], exclusive: bool = False) -> list[Text]:
+    """Make ``texts`` the ones ids are looked up in (their derivations imported); with
+    ``exclusive``, the only ones :func:`active` lists."""
+    if exclusive:
+        _ACTIVE.clear()
     for t in texts:
         other = _ACTIVE.get(t.id)
         if other is not None and other.root != t.root:
