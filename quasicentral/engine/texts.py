@@ -371,3 +371,10 @@ def records(selected: list[Text] | None = None) -> tuple[dict, dict]:
         errata.update(t.errata)
         cleared.update(t.cleared)
     return errata, cleared
+
+
+def reset() -> None:
+    """Forget every text that is not shipped (a long-lived process reading several user texts)."""
+    for text in list(_OPEN.values()):
+        if not text.is_shipped:
+            forget(text)

@@ -1,0 +1,159 @@
+"""A text is a folder: a user's text verifies, reports and mutates without touching the package;
+a user's mistake in it gets one clear line and exit 2 (or an inconclusive verdict with a reason)."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from quasicentral import cli
+from quasicentral.engine import run, texts
+from quasicentral.engine.checker import Options
+
+KEPLER = Path(__file__).parent / "data" / "kepler"
+
+
+@pytest.fixture(autouse=True)
+def _isolated(tmp_path, monkeypatch):
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
+    yield
+    texts.reset()
+
+
+@pytest.fixture
+def kepler(tmp_path) -> Path:
+    folder = tmp_path / "kepler"
+    shutil.copytree(KEPLER, folder)
+    return folder
+
+
+def _run(argv, capsys):
+    code = cli.main(argv)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_new_text_verifies_at_once(tmp_path, capsys):
+    code, out, _ = _run(["new-text", str(tmp_path / "mine")], capsys)
+    assert code == 0 and "text.toml" in out
+    code, out, err = _run(["verify", "--text", str(tmp_path / "mine"), "--json"], capsys)
+    assert code == 0, err
+    doc = json.loads(out)
+    assert {r["text"] for r in doc["equations"]} == {"mine"}
+    assert [r["status"] for r in doc["equations"]] == ["verified", "erratum"]
+    erratum = doc["equations"][1]
+    assert erratum["witness"]["certified"] and erratum["witness"]["parameters"]
+
+
+def test_new_text_refuses_a_folder_in_use(tmp_path, capsys):
+    (tmp_path / "busy").mkdir()
+    (tmp_path / "busy" / "notes.txt").write_text("mine")
+    code, _, err = _run(["new-text", str(tmp_path / "busy")], capsys)
+    assert code == 2 and "not empty" in err and err.count("\n") == 1
+
+
+def test_a_third_text_verifies_with_its_own_symbols(kepler, capsys):
+    """G, M, e, a, p, T and θ are the text's own; u(θ), r(θ) are functions of θ, and u'' reaches
+    the numeric and certified stages."""
+    code, out, err = _run(["verify", "--text", str(kepler), "--json"], capsys)
+    assert code == 0, err
+    rows = {r["id"]: r for r in json.loads(out)["equations"]}
+    assert rows["kepler:1"]["status"] == "verified" and rows["kepler:1"]["method"] == "symbolic"
+    for eid in ("kepler:2", "kepler:3"):
+        assert rows[eid]["status"] == "erratum"
+        w = rows[eid]["witness"]
+        assert w["certified"] and set(w["parameters"]) <= {"theta", "G", "M", "h", "e", "T"}
+    code, out, _ = _run(["errata", "--text", str(kepler), "--json"], capsys)
+    assert code == 0 and [r["kind"] for r in json.loads(out)["errata"]] == ["sign", "exponent"]
+
+
+def test_a_refuted_function_of_theta_is_certified(kepler, capsys):
+    """A typo in Binet's equation (u'' − u): the second derivative in θ reaches the balls."""
+    cat = kepler / "catalog" / "orbit.toml"
+    cat.write_text(cat.read_text().replace("printed = '''Eq(D(u, 2) + u, G*M/h**2)'''",
+                                           "printed = '''Eq(D(u, 2) - u, G*M/h**2)'''"))
+    code, out, _ = _run(["verify", "--text", str(kepler), "--id", "kepler:1", "--json"], capsys)
+    row = json.loads(out)["equations"][0]
+    assert code == 1 and row["verdict"] == "refuted" and row["witness"]["certified"]
+
+
+def test_shipped_and_user_texts_together(kepler, capsys):
+    code, out, err = _run(["catalog", "--text", str(kepler), "--text", "pendulum", "--json"], capsys)
+    assert code == 0, err
+    assert {r["text"] for r in json.loads(out)["equations"]} == {"kepler", "pendulum"}
+
+
+def _edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text()
+    assert old in text
+    path.write_text(text.replace(old, new))
+
+
+MISTAKES = {
+    "toml syntax": (lambda k: _edit(k / "catalog" / "orbit.toml", 'number = "2"', 'number = "2'),
+                    "orbit.toml:"),
+    "unknown symbol": (lambda k: _edit(k / "catalog" / "orbit.toml", "Eq(r, p/(1 - e*cos(theta)))",
+                                       "Eq(r, q/(1 - e*cos(theta)))"), "unknown name q"),
+    "duplicate id": (lambda k: _edit(k / "catalog" / "orbit.toml", 'id = "kepler:3"', 'id = "kepler:2"'),
+                     "duplicate id"),
+    "derivation without entry": (lambda k: _edit(k / "orbit.py", '@derives("kepler:3"', '@derives("kepler:9"'),
+                                 "not in the catalog"),
+    "entry without derivation": (lambda k: _edit(k / "orbit.py", '@derives("kepler:3", unknowns=(T**2,))\n', ""),
+                                 "has no derivation"),
+    "module raises": (lambda k: _edit(k / "orbit.py", "S = symbols_of(__file__)", "S = symbols_of(__file__)\n1 / 0"),
+                      "orbit.py:9: ZeroDivisionError"),
+    "undeclared in the module": (lambda k: _edit(k / "orbit.py", 'S("theta G M h e p a T u r")',
+                                                 'S("theta G M h e p a T u r w")'), "no symbol 'w'"),
+    "bad symbol table": (lambda k: _edit(k / "text.toml", 'dimension = "L^2/T"', 'dimension = "metre"'),
+                         "text.toml:"),
+    "bad errata kind": (lambda k: _edit(k / "errata" / "orbit.toml", 'kind = "sign"', 'kind = "typo"'),
+                        "unknown kind"),
+    "no text.toml": (lambda k: (k / "text.toml").unlink(), "text.toml: missing"),
+}
+
+
+@pytest.mark.parametrize("mistake", sorted(MISTAKES))
+@pytest.mark.parametrize("command", ["verify", "mutate"])
+def test_a_users_mistake_is_one_line_and_exit_2(mistake, command, kepler, capsys):
+    spoil, expected = MISTAKES[mistake]
+    spoil(kepler)
+    code, _, err = _run([command, "--text", str(kepler)], capsys)
+    assert code == 2, err
+    assert err.count("\n") == 1 and "internal error" not in err and "Traceback" not in err
+    assert expected in err
+
+
+def test_a_derivation_that_raises_while_checked_is_inconclusive(kepler, capsys):
+    _edit(kepler / "orbit.py", "    b = a * sp.sqrt(1 - e**2)", "    b = a * sp.sqrt(1 - e**2) / 0 * undefined_name")
+    code, out, err = _run(["verify", "--text", str(kepler), "--json"], capsys)
+    row = {r["id"]: r for r in json.loads(out)["equations"]}["kepler:3"]
+    assert code == 1 and row["status"] == "unexpected" and row["verdict"] == "inconclusive"
+    assert "derivation failed: NameError" in row["detail"]
+
+
+def test_the_cache_follows_the_texts_files(kepler, capsys):
+    """Editing a user's derivation invalidates its verdicts, and only those."""
+    assert _run(["verify", "--text", str(kepler), "--text", "pendulum"], capsys)[0] == 0
+    _edit(kepler / "orbit.py", "return sp.Eq(T**2, sp.simplify(period**2))",
+          "return sp.Eq(T**2, sp.simplify(2 * period**2))")
+    texts.reset()
+    seen = []
+    selected = texts.activate(texts.resolve([str(kepler), "pendulum"]))
+    outcomes = run.run(texts.entries(selected), Options(), progress=seen.append)
+    assert seen[0].cached == len(texts.get("pendulum").entries)  # the other text's verdicts stand
+    by_id = {o.id: o for o in outcomes}
+    assert not by_id["kepler:3"].ok  # the edited derivation no longer supports the correction
+
+
+def test_report_builds_only_the_texts_named(kepler, tmp_path, capsys):
+    out_dir = tmp_path / "out"
+    code, out, err = _run(["report", "--text", str(kepler), "--out", str(out_dir)], capsys)
+    assert code == 0, err
+    names = sorted(p.name for p in out_dir.glob("*.tex"))
+    assert names == ["kepler-report-en.tex", "versions.tex"]
+    tex = (out_dir / "kepler-report-en.tex").read_text()
+    assert r"\theta" in tex and "varphi" not in tex  # θ prints as declared
+    assert "Brepta" not in tex and not (out_dir / "figures").exists()
