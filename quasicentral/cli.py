@@ -85,7 +85,8 @@ def _add_text_options(parser: argparse.ArgumentParser, source: bool = True) -> N
 def build_parser() -> argparse.ArgumentParser:
     from quasicentral.models.motion import MODELS  # the models' registry names the choices
 
-    p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.",
+    p = _Parser(prog="quasicentral", description="Re-derive every equation of a text with sympy, check it with mpmath and ball "
+                "arithmetic, and record its errata (the shipped texts, or a text of your own: new-text).",
                 epilog="exit codes: 0 success, 1 an unexpected result (see each command), 2 bad usage or input\n"
                        "(one line on stderr).  A reader that closes the pipe early (| head) ends the output quietly\n"
                        "and the exit code stays the command's own, so `set -o pipefail` fails only on a real failure.\n"
@@ -101,12 +102,12 @@ def build_parser() -> argparse.ArgumentParser:
                  "~/.cache/quasicentral).  Exit 0 when every entry is verified, a registered erratum or a cleared\n"
                  "suspect; 1 when anything is unexpected; 2 on bad usage (e.g. a selection that selects nothing).",
                  "quasicentral verify\n"
-                 "quasicentral verify --source pendulum --json\n"
-                 "quasicentral verify --id brepta1953:4 --id brepta1953:23 --no-cache --jobs 2\n"
+                 "quasicentral verify --text mynotes --json\n"
+                 "quasicentral verify --text mynotes --id mynotes:2 --no-cache --jobs 2\n"
                  "quasicentral verify --junit build/verify.xml")
     _add_text_options(v)
     v.add_argument("--id", action="append", dest="ids", metavar="ID",
-                   help="only this entry, e.g. brepta1953:4 (repeatable; see `quasicentral catalog`)")
+                   help="only this entry, TEXT:LABEL (repeatable; see `quasicentral catalog`)")
     v.add_argument("--json", action="store_true", help="print a JSON document instead of the table (no progress bar)")
     v.add_argument("--dps", type=_positive_int("--dps", VERIFY_MAX_DPS), default=30, metavar="N",
                    help=f"first rung of the precision ladder, decimal digits, at most {VERIFY_MAX_DPS} "
@@ -120,7 +121,7 @@ def build_parser() -> argparse.ArgumentParser:
                  "Lists each registered erratum (the printed form refuted, the corrected one verified, with the\n"
                  "witness values) and each suspect that turned out right.  Exit 0 when every erratum still stands\n"
                  "and every suspect is cleared, 1 otherwise.",
-                 "quasicentral errata\nquasicentral errata --source brepta1953 --json")
+                 "quasicentral errata\nquasicentral errata --text mynotes --json")
     _add_text_options(e)
     e.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
     e.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (default: use them)")
@@ -131,7 +132,7 @@ def build_parser() -> argparse.ArgumentParser:
                   "checks the rest with the fast checker.  Takes minutes: use --per-entry for a sample.\n\n"
                   "exit codes: 0 every mutant detected (recall 100 %) and no false alarm on the unmutated\n"
                   "entries; 1 a mutant went undetected or an unmutated entry was refuted; 2 bad usage.",
-                  "quasicentral mutate --per-entry 3\nquasicentral mutate --source pendulum --json")
+                  "quasicentral mutate --per-entry 3\nquasicentral mutate --text mynotes --json")
     mu.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
     _add_text_options(mu)
     mu.add_argument("--per-entry", type=_positive_int("--per-entry", 50), default=None, metavar="N",
@@ -219,7 +220,7 @@ def build_parser() -> argparse.ArgumentParser:
     c = _command(sub, "catalog", "list the catalog: ids, dimensions, LaTeX-parser coverage",
                  "Lists every entry with its id (for verify --id), section and dimensions, and which of sympy's\n"
                  "LaTeX parsers read its printed form back correctly.",
-                 "quasicentral catalog\nquasicentral catalog --source pendulum --json")
+                 "quasicentral catalog\nquasicentral catalog --text mynotes --json")
     _add_text_options(c)
     c.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
     return p

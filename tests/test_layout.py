@@ -1,0 +1,104 @@
+"""The layout shows the architecture: imports point one way, from the CLI down to the notation;
+no module uses another's private names; no module of the package names a shipped text."""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+import pytest
+
+PACKAGE = Path(__file__).parent.parent / "quasicentral"
+
+#: rank of each layer: a module may import its own layer's modules and lower ranks only.
+LAYERS = {
+    "quasicentral.files": 0, "quasicentral.progress": 0,
+    "quasicentral.notation": 1,
+    "quasicentral.engine": 2, "quasicentral.models": 2,
+    "quasicentral.studies": 3,
+    "quasicentral.documents": 4,
+    "quasicentral.api": 5, "quasicentral.cli": 5,
+}
+
+
+def _layer(module: str) -> str | None:
+    for prefix in sorted(LAYERS, key=len, reverse=True):
+        if module == prefix or module.startswith(prefix + "."):
+            return prefix
+    return None
+
+
+def _modules():
+    for path in sorted(PACKAGE.rglob("*.py")):
+        if "__pycache__" in path.parts:
+            continue
+        rel = path.relative_to(PACKAGE.parent).with_suffix("")
+        parts = rel.parts[:-1] if rel.name == "__init__" else rel.parts
+        yield ".".join(parts), path
+
+
+MODULES = list(_modules())
+
+
+def _imports(tree: ast.AST):
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for a in node.names:
+                yield a.name, None, a.asname or a.name.split(".")[0]
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            for a in node.names:
+                yield node.module, a.name, a.asname or a.name
+
+
+@pytest.mark.parametrize("module,path", MODULES, ids=[m for m, _ in MODULES])
+def test_imports_point_downward(module, path):
+    mine = _layer(module)
+    if mine is None:  # the package's __init__: lazy attributes only
+        return
+    tree = ast.parse(path.read_text())
+    for target, name, _ in _imports(tree):
+        full = f"{target}.{name}" if name and _layer(f"{target}.{name}") else target
+        theirs = _layer(full)
+        if theirs is None or theirs == mine:
+            continue
+        assert LAYERS[theirs] < LAYERS[mine], f"{module} imports {full}: {theirs} is not below {mine}"
+
+
+@pytest.mark.parametrize("module,path", MODULES, ids=[m for m, _ in MODULES])
+def test_no_private_name_across_modules(module, path):
+    tree = ast.parse(path.read_text())
+    bound = {}
+    for target, name, alias in _imports(tree):
+        if not target.startswith("quasicentral"):
+            continue
+        assert not (name or "").startswith("_"), f"{module} imports the private {target}.{name}"
+        bound[alias] = f"{target}.{name}" if name else target
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id in bound:
+            if node.attr.startswith("_") and not node.attr.startswith("__"):
+                raise AssertionError(f"{module} uses the private {bound[node.value.id]}.{node.attr}")
+
+
+SHIPPED = re.compile(r"brepta|\bfig(?:ure)?\s*\d|\bpendulum:", re.I)
+
+
+def _docstrings(tree):
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            body = node.body
+            if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant):
+                yield body[0].value
+
+
+@pytest.mark.parametrize("module,path", MODULES, ids=[m for m, _ in MODULES])
+def test_no_module_names_a_shipped_text(module, path):
+    """Texts bring their own folder: their ids, sections and figures live there, not here.
+    (Docstrings may name them in examples.)"""
+    tree = ast.parse(path.read_text())
+    docs = {id(d) for d in _docstrings(tree)}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docs:
+            assert not SHIPPED.search(node.value), f"{module}:{node.lineno} names a shipped text: {node.value[:60]!r}"
+        if isinstance(node, ast.Name) and "brepta" in node.id.lower():
+            raise AssertionError(f"{module}:{node.lineno} names a shipped text: {node.id}")
