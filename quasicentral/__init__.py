@@ -9,7 +9,7 @@ python-flint, record the errata.  The layers, from the bottom:
 * :mod:`quasicentral.api` (for notebooks) and :mod:`quasicentral.cli` (the command) on top.
 """
 
-__all__ = ["load_text", "shipped_texts"]
+__all__ = ["load_text", "new_text", "shipped_texts"]
 
 
 def __getattr__(name: str):

@@ -37,6 +37,15 @@ def load_text(text: str | Path, reload: bool = False) -> "Text":
     return Text(found)
 
 
+def new_text(folder: str | Path, text_id: str | None = None) -> "Text":
+    """Write the skeleton of a text of one's own into ``folder`` (as ``quasicentral new-text``)
+    and load it."""
+    from quasicentral.engine import skeleton
+
+    skeleton.write(Path(folder), text_id)
+    return load_text(Path(folder))
+
+
 def shipped_texts() -> list[str]:
     """The ids of the texts that come with quasicentral."""
     return [t.id for t in texts.shipped()]
