@@ -8,7 +8,7 @@ from quasicentral.engine import catalog
 
 from quasicentral.engine import errata
 from quasicentral.engine.catalog import CatalogError, load_file
-from quasicentral.notation.dimensions import UNDETERMINED, check_relation
+from quasicentral.notation.dimensions import check_relation
 from quasicentral.engine.registry import REGISTRY
 
 ENTRIES = texts.entries(texts.active())
@@ -44,15 +44,16 @@ def test_dimensions(eid):
     """Every entry is dimensionally consistent, unless it is a registered erratum (a printed
     equation that mixes units is an error in print, and must be recorded as one)."""
     e = texts.entry(eid)
-    problems = [p for p in (check_relation(r, e.dims) for r in e.relations()) if p]
-    assert not any(p.startswith(UNDETERMINED) for p in problems), f"a dimension is not declared: {problems}"
+    checks = [check_relation(r, e.dims) for r in e.relations()]
+    problems = [str(c) for c in checks if c.inconsistent or c.undetermined]
+    assert not any(c.undetermined for c in checks), f"a dimension is not declared: {problems}"
     errs, _ = texts.records()
     if problems:
         assert eid in errs, f"dimensionally inconsistent and not a registered erratum: {problems}"
     if eid in errs:
         rec = errs[eid]
         for rel in rec.relations():
-            assert check_relation(rel, e.dims) is None, "a correction must be dimensionally consistent"
+            assert check_relation(rel, e.dims).status.value == "consistent", "a correction must be dimensionally consistent"
 
 
 def test_every_entry_has_a_derivation():

@@ -157,3 +157,12 @@ def test_report_builds_only_the_texts_named(kepler, tmp_path, capsys):
     tex = (out_dir / "kepler-report-en.tex").read_text()
     assert r"\theta" in tex and "varphi" not in tex  # θ prints as declared
     assert "Brepta" not in tex and not (out_dir / "figures").exists()
+
+
+def test_mutate_on_a_users_text(kepler, capsys):
+    """Mutation testing works on any text's symbols (θ, G, M …): no internal error."""
+    code, out, err = _run(["mutate", "--text", str(kepler), "--json", "--jobs", "1"], capsys)
+    assert code in (0, 1) and "internal error" not in err, err
+    res = json.loads(out)
+    assert res["entries"] == 1 and res["mutants"] > 5 and res["false_alarms"] == 0
+    assert res["recall"] == 1.0, res["undetected"]

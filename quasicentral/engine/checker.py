@@ -26,7 +26,7 @@ import mpmath
 import sympy as sp
 
 from quasicentral.notation import bridge
-from quasicentral.notation.dimensions import UNDETERMINED, check_relation
+from quasicentral.notation.dimensions import check_relation
 from quasicentral.notation.domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
 from quasicentral.engine.registry import Derivation, Mode, as_list
 from quasicentral.notation.symbols import SymbolTable
@@ -331,10 +331,10 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
     """The verdict on ``printed`` against ``derivation`` (see the module docstring)."""
     from quasicentral.engine.registry import derived
 
-    found = [r for r in (check_relation(rel, dims) for rel in printed) if r]
-    dim_problems = [r for r in found if not r.startswith(UNDETERMINED)]
+    found = [c for c in (check_relation(rel, dims) for rel in printed) if c.inconsistent or c.undetermined]
+    dim_problems = [c.reason for c in found if c.inconsistent]
     dim_text = ("inconsistent: " + "; ".join(dim_problems) if dim_problems
-                else "; ".join(found) if found else "consistent")
+                else "; ".join(str(c) for c in found) if found else "consistent")
 
     def unsettled(reason: str) -> Verdict:
         # a relation whose two sides differ in dimension is wrong whatever the comparison

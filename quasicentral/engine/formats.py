@@ -80,9 +80,9 @@ def catalog_document(entries: list[Entry], coverage: dict) -> dict:
 
     rows = []
     for e in entries:
-        problems = [p for p in (check_relation(r, e.dims) for r in e.relations()) if p]
+        problems = [c for c in (check_relation(r, e.dims) for r in e.relations()) if c.inconsistent or c.undetermined]
         rows.append({**_entry_head(e), "printed_latex": e.latex, "transcription": e.printed_text,
-                     "dimensions": "consistent" if not problems else "inconsistent: " + "; ".join(problems),
+                     "dimensions": "consistent" if not problems else "; ".join(str(c) for c in problems),
                      "latex_parser": coverage["entries"].get(e.id)})
     return {"equations": rows, "latex_parser": coverage["summary"]}
 

@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from quasicentral.notation.symbols import DIMENSIONLESS
+from dataclasses import dataclass
+from enum import Enum
+
+from quasicentral.notation.symbols import DIMENSIONLESS, dim_text
 
 
 class DimensionError(ValueError):
@@ -99,13 +102,38 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
     raise DimensionUnknown(f"cannot take the dimension of {sp.sstr(e)}")
 
 
-UNDETERMINED = "undetermined: "
+class DimensionStatus(Enum):
+    CONSISTENT = "consistent"
+    INCONSISTENT = "inconsistent"
+    UNDETERMINED = "undetermined"  # a dimension is not declared: nothing can be concluded
 
 
-def check_relation(rel: sp.Basic, dims: dict) -> str | None:
-    """None when consistent, else the reason (prefixed :data:`UNDETERMINED` when a dimension is
-    not declared, which proves nothing).  An equation compares its two sides; where it
-    has logarithms of dimensional quantities (ln L = −2κt + ln A), they are combined first
+@dataclass(frozen=True)
+class DimensionCheck:
+    """The dimensional verdict on one relation, with the reason when it is not consistent."""
+
+    status: DimensionStatus
+    reason: str = ""
+
+    @property
+    def inconsistent(self) -> bool:
+        return self.status is DimensionStatus.INCONSISTENT
+
+    @property
+    def undetermined(self) -> bool:
+        return self.status is DimensionStatus.UNDETERMINED
+
+    def __str__(self) -> str:
+        return self.status.value + (f": {self.reason}" if self.reason else "")
+
+
+CONSISTENT = DimensionCheck(DimensionStatus.CONSISTENT)
+
+
+def check_relation(rel: sp.Basic, dims: dict) -> DimensionCheck:
+    """Whether ``rel`` is dimensionally consistent; *undetermined* when a dimension is not
+    declared (which proves nothing).  An equation compares its two sides; where it has
+    logarithms of dimensional quantities (ln L = −2κt + ln A), they are combined first
     (ln(L/A)), so only their ratio needs to be dimensionless."""
     try:
         if isinstance(rel, sp.Eq) and any(a.args[0].free_symbols for a in rel.atoms(sp.log)):
@@ -113,15 +141,16 @@ def check_relation(rel: sp.Basic, dims: dict) -> str | None:
         elif isinstance(rel, sp.Eq):
             dl, dr = dimension(rel.lhs, dims), dimension(rel.rhs, dims)
             if rel.lhs != 0 and rel.rhs != 0 and sp.simplify(dl / dr) != 1:
-                return f"left side [{_fmt(dl)}], right side [{_fmt(dr)}]"
+                return DimensionCheck(DimensionStatus.INCONSISTENT,
+                                      f"left side [{_fmt(dl)}], right side [{_fmt(dr)}]")
         else:
             dimension(rel, dims)
     except DimensionUnknown as exc:
-        return UNDETERMINED + str(exc)
+        return DimensionCheck(DimensionStatus.UNDETERMINED, str(exc))
     except DimensionError as exc:
-        return str(exc)
-    return None
+        return DimensionCheck(DimensionStatus.INCONSISTENT, str(exc))
+    return CONSISTENT
 
 
 def _fmt(d: sp.Expr) -> str:
-    return "1" if d == 1 else sp.sstr(d)
+    return dim_text(d)
