@@ -9,7 +9,7 @@ energy per mass lost to drag, both optional "extras"):
 * ``"quadratic"`` — small swings under quadratic drag, (26)–(27):
   ẍ = −Ω²x − βẋv, ÿ = −Ω²y − βẏv, v = √(ẋ² + ẏ²);
 * ``"spherical"`` — the full nonlinear spherical pendulum (6)–(7) with either drag law, in the
-  horizontal coordinates of :mod:`quasicentral.spherical` (no singularity at the lowest point):
+  horizontal coordinates of :mod:`quasicentral.models.spherical` (no singularity at the lowest point):
   Ẍ = −γẊ − X(v² + gZ)/l², Ÿ = −γẎ − Y(v² + gZ)/l², Z = √(l² − X² − Y²), γ = 2κ or βv.
 
 Initial conditions are the paper's: x = R0, y = 0, ẋ = 0, ẏ = v0.
@@ -19,7 +19,7 @@ xẏ − yẋ = R0 v0 e^{−βs} never vanishes, so neither does v, and the righ
 A planar swing (v0 = 0) stops at each turning point: there v|ẋ| has a kink and a Taylor method
 returns NaN (the derivative of √(ẋ²) at 0).  The planar system is therefore integrated as
 ẍ = −Ω²x − σβẋ², σ = sign ẋ fixed on each stretch, with an event at σẋ = 0 that flips σ and
-restarts: every stretch is analytic and the method keeps its order (NUMERICS.md).
+restarts: every stretch is analytic and the method keeps its order.
 
 Back ends, one algorithm each, all with the same systems:
 
@@ -49,13 +49,17 @@ from dataclasses import dataclass, field
 import mpmath
 import numpy as np
 
-MODELS = ("linear", "quadratic", "spherical")
+from quasicentral.models import registry
+from quasicentral.models.equations import System, rhs
+from quasicentral.models.parameters import ParameterError, Swing
+from quasicentral.notation import numbers
+
+MODELS = tuple(m.value for m in registry.REFERENCE)
 METHODS = ("auto", "dop853", "heyoka", "mpmath")
 DOUBLE_TOL = 1e-14  # below this the results are mpmath numbers
 
 
-class ModelError(ValueError):
-    """Bad model, parameters or method."""
+ModelError = ParameterError  # bad model, parameters or method
 
 
 # --- parameters -------------------------------------------------------------------------------
@@ -80,9 +84,9 @@ class Problem:
         return self.v0 == 0 and self.beta != 0
 
     @property
-    def kind(self) -> str:
+    def kind(self) -> System:
         base = self.model if self.model != "spherical" else ("spherical-quadratic" if self.beta else "spherical-linear")
-        return base + ("-planar" if self.planar and self.model != "linear" else "")
+        return System(base + ("-planar" if self.planar and self.model != "linear" else ""))
 
     def pars(self) -> tuple:
         """The runtime parameters of the compiled system, in the order of :func:`_rhs`."""
@@ -96,136 +100,50 @@ class Problem:
 
 def _exact(value, name):
     try:
-        val = mpmath.mpf(value) if isinstance(value, (float, int, mpmath.mpf)) else mpmath.mpf(str(value).strip())
-    except (ValueError, TypeError):
-        raise ModelError(f"{name} must be a number, not {value!r}") from None
-    if not mpmath.isfinite(val):
-        raise ModelError(f"{name} must be finite, not {value!r}")
-    return val
+        return numbers.to_mpf(value, name)
+    except numbers.NumberError as exc:
+        raise ModelError(str(exc), name) from None
 
 
 def problem(model: str, params: dict) -> Problem:
     """A :class:`Problem` from a mapping with keys ``R0``, ``v0``, ``kappa`` *or* ``beta``, and
     either ``omega2`` (Ω² = g/l, small-swing models) or ``l`` and ``g`` (any model; the
     spherical model needs ``l``: with ``omega2`` and ``l``, g = Ω²l).  Call inside a
-    ``mpmath.workdps`` of the precision wanted when strings carry many digits."""
-    if model not in MODELS:
-        raise ModelError(f"unknown model {model!r}; choose from {', '.join(MODELS)}")
+    ``mpmath.workdps`` of the precision wanted when strings carry many digits.  The
+    parameters are checked by :class:`~quasicentral.models.parameters.Swing`."""
+    model = registry.lookup(model, registry.REFERENCE, ModelError).value
     unknown = set(params) - {"R0", "v0", "omega2", "l", "g", "kappa", "beta"}
     if unknown:
         raise ModelError(f"unknown parameter(s) {', '.join(sorted(unknown))}")
     get = lambda k, d=None: _exact(params[k], k) if params.get(k) is not None else d  # noqa: E731
     R0, v0 = get("R0"), get("v0", mpmath.mpf(0))
     if R0 is None:
-        raise ModelError("R0 is required")
+        raise ModelError("R0 is required", "R0")
     kappa, beta = get("kappa", mpmath.mpf(0)), get("beta", mpmath.mpf(0))
     length, g, omega2 = get("l"), get("g"), get("omega2")
     if omega2 is None:
         if length is None or g is None:
-            raise ModelError("give omega2, or l and g")
+            raise ModelError("give omega2, or l and g", "omega2")
         if length <= 0 or g <= 0:
-            raise ModelError("l and g must be positive")
+            raise ModelError("l and g must be positive", "l" if length <= 0 else "g")
         omega2 = g / length
     elif g is None and length is not None:
         g = omega2 * length
-    elif g is not None and length is None:
+    elif g is not None and length is None and omega2 > 0:
         length = g / omega2
-    if not omega2 > 0:
-        raise ModelError(f"omega2 must be positive, not {omega2}")
-    if not R0 > 0:
-        raise ModelError(f"R0 must be positive, not {R0}")
-    if v0 < 0 or kappa < 0 or beta < 0:
-        raise ModelError("v0, kappa and beta must be ≥ 0")
-    if kappa and beta:
-        raise ModelError("give one drag law: kappa (linear) or beta (quadratic)")
     if model == "linear" and beta:
-        raise ModelError("the linear model takes kappa, not beta")
+        raise ModelError("the linear model takes kappa, not beta", "beta")
     if model == "quadratic" and kappa:
-        raise ModelError("the quadratic model takes beta, not kappa")
-    if model == "spherical":
-        if length is None:
-            raise ModelError("the spherical model needs the length l (and g or omega2)")
-        if not R0 < length:
-            raise ModelError("R0 must be below the length l")
-        z0 = mpmath.sqrt(length**2 - R0**2)
-        if v0 * v0 / 2 >= g * z0:
-            raise ModelError("v0 is so large that the bob could rise to the pivot's horizontal (Z = 0)")
+        raise ModelError("the quadratic model takes beta, not kappa", "kappa")
+    if model == "spherical" and length is None:
+        raise ModelError("the spherical model needs the length l (and g or omega2)", "l")
+    Swing(R0, v0, omega2, kappa, beta, length, g)  # raises ParameterError (= ModelError)
     return Problem(model, R0, v0, omega2, kappa, beta, length, g)
 
 
-# --- the right-hand sides, in any arithmetic ---------------------------------------------------
-def _rhs(kind: str, pars, lib, extras: bool):
-    """f(t, s) for the state of ``kind`` (plus s, D when ``extras``); ``pars`` as
-    :meth:`Problem.pars` (with σ appended for planar kinds); ``lib`` is math or mpmath."""
-    sqrt = lib.sqrt
-    if kind == "linear":
-        w2, g2 = pars
-
-        def f(_t, s):
-            x, y, u, w = s[0], s[1], s[2], s[3]
-            out = [u, w, -w2 * x - g2 * u, -w2 * y - g2 * w]
-            if extras:
-                v2 = u * u + w * w
-                out += [sqrt(v2), g2 * v2]
-            return out
-    elif kind == "quadratic":
-        w2, b = pars
-
-        def f(_t, s):
-            x, y, u, w = s[0], s[1], s[2], s[3]
-            sp = sqrt(u * u + w * w)
-            out = [u, w, -w2 * x - b * u * sp, -w2 * y - b * w * sp]
-            if extras:
-                out += [sp, b * sp * sp * sp]
-            return out
-    elif kind == "quadratic-planar":  # σ = sign ẋ given (None: taken from ẋ, the kinked law itself)
-        w2, b, sig0 = pars
-
-        def f(_t, s):
-            x, u = s[0], s[1]
-            sig = sig0 if sig0 is not None else math.copysign(1.0, u)
-            out = [u, -w2 * x - sig * b * u * u]
-            if extras:
-                out += [sig * u, sig * b * u * u * u]
-            return out
-    elif kind in ("spherical-linear", "spherical-quadratic"):
-        ln, g, drag = pars
-        l2 = ln * ln
-        quad = kind == "spherical-quadratic"
-
-        def f(_t, s):
-            X, Y, U, W = s[0], s[1], s[2], s[3]
-            Z = sqrt(l2 - X * X - Y * Y)
-            Zd = -(X * U + Y * W) / Z
-            v2 = U * U + W * W + Zd * Zd
-            sp = sqrt(v2)
-            gam = drag * sp if quad else drag
-            c = (v2 + g * Z) / l2
-            out = [U, W, -gam * U - X * c, -gam * W - Y * c]
-            if extras:
-                out += [sp, gam * v2]
-            return out
-    elif kind == "spherical-quadratic-planar":
-        ln, g, b, sig0 = pars
-        l2 = ln * ln
-
-        def f(_t, s):
-            X, U = s[0], s[1]
-            sig = sig0 if sig0 is not None else math.copysign(1.0, U)
-            Z = sqrt(l2 - X * X)
-            sp = sig * U * ln / Z  # the speed, analytic on a stretch of constant σ
-            v2 = sp * sp
-            out = [U, -b * sp * U - X * (v2 + g * Z) / l2]
-            if extras:
-                out += [sp, b * sp * v2]
-            return out
-    else:  # pragma: no cover - internal
-        raise ModelError(f"unknown system {kind!r}")
-    return f
-
-
-def _dim(kind: str, extras: bool) -> int:
-    return (2 if kind.endswith("planar") else 4) + (2 if extras else 0)
+# --- the systems ---------------------------------------------------------------------------
+def _dim(kind, extras: bool) -> int:
+    return System(kind).dimension(extras)
 
 
 def _initial(p: Problem, extras: bool) -> list:
@@ -305,7 +223,8 @@ def solve(model: str, params: dict, t, *, tol: float = 1e-12, method: str = "aut
 
 
 # --- back end: scipy DOP853 (Fortran) -----------------------------------------------------------
-def _scale(p: Problem) -> float:
+def scale(p: Problem) -> float:
+    """max(R0, v0/Ω) as a float: the size of the motion errors are measured against."""
     om = math.sqrt(float(p.omega2))
     return max(float(p.R0), float(p.v0) / om)
 
@@ -325,9 +244,9 @@ def _solve_dop853(p: Problem, times: list[float], tol: float, extras: bool, bran
     # the step across a turning point is then smooth and accepted at once, fewer evaluations)
     if branchwise is None:
         branchwise = planar and tol <= 1e-6
-    cur = {"sig": -1.0, "f": _rhs(kind, pars + ((-1.0 if branchwise else None,) if planar else ()), math, extras)}
+    cur = {"sig": -1.0, "f": rhs(kind, pars + ((-1.0 if branchwise else None,) if planar else ()), math, extras)}
     rtol = 0.1 * tol  # the global error of DOP853 grows to ~3–10× its local tolerance over 10 periods
-    atol = rtol * _scale(p) * 1e-2
+    atol = rtol * scale(p) * 1e-2
 
     def fun(tt, y):
         return cur["f"](tt, y.tolist())
@@ -366,12 +285,12 @@ def _solve_dop853(p: Problem, times: list[float], tol: float, extras: bool, bran
                 out[i] = list(y)
                 break
             # a turning point in (last accepted step, r.t): Newton on ẋ(t) with the same stretch
-            cur["branch"] = branch = _rhs(kind, pars + (cur["sig"],), math, extras)
+            cur["branch"] = branch = rhs(kind, pars + (cur["sig"],), math, extras)
             tz, yz = _turning_point(finder, branch, prev["t"], prev["y"], r.t, y, 0.01 * tol / om)
             yz[1] = 0.0  # exactly at rest
             cur["sig"] = -cur["sig"]
             if branchwise:
-                cur["f"] = _rhs(kind, pars + (cur["sig"],), math, extras)
+                cur["f"] = rhs(kind, pars + (cur["sig"],), math, extras)
             turns += 1
             prev.clear()
             r.set_initial_value(yz, tz)
@@ -441,19 +360,18 @@ def _heyoka_integrator(kind: str, extras: bool, tol: float):
 
     fp, prec, conv = _heyoka_fp(tol)
     n = _dim(kind, extras)
-    names = ["x", "y", "u", "w"] if not kind.endswith("planar") else ["x", "u"]
+    names = ["x", "y", "u", "w"] if not System(kind).planar else ["x", "u"]
     names += ["s", "D"] if extras else []
     vs = hy.make_vars(*names)
-    npar = {"linear": 2, "quadratic": 2, "quadratic-planar": 3, "spherical-linear": 3, "spherical-quadratic": 3,
-            "spherical-quadratic-planar": 4}[kind]
+    npar = System(kind).n_parameters
     pars = [hy.par[i] for i in range(npar)]
-    rhs = _rhs(kind, pars, hy, extras)(None, vs)
+    rhs = rhs(kind, pars, hy, extras)(None, vs)
     sysl = list(zip(vs, rhs))
     kw = {"fp_type": fp, "tol": conv(mpmath.mpf(tol) / 10)}
     if prec:
         kw.update(prec=prec, compact_mode=True)
     events = []
-    if kind.endswith("planar"):  # σẋ falls through zero at a turning point
+    if System(kind).planar:  # σẋ falls through zero at a turning point
         events = [hy.t_event(pars[-1] * vs[1], direction=hy.event_direction.negative, fp_type=fp)]
     zero = conv(mpmath.mpf(0))
     ta = hy.taylor_adaptive(sysl, [zero] * n, pars=[zero] * npar, t_events=events, **kw)
@@ -507,7 +425,7 @@ def _solve_mpmath(p: Problem, times, tol: float, extras: bool):
         y0 = [mpmath.mpf(a) for a in _initial(p, extras)]
         out = [None] * len(times)
         if not p.planar:
-            sol = mpmath.odefun(_rhs(p.kind, pars, mpmath, extras), 0, y0)
+            sol = mpmath.odefun(rhs(p.kind, pars, mpmath, extras), 0, y0)
             for i in order:
                 out[i] = list(sol(times[i]))
             return out, {}
@@ -515,7 +433,7 @@ def _solve_mpmath(p: Problem, times, tol: float, extras: bool):
         h = 2 * mpmath.pi / mpmath.sqrt(p.omega2) / 16
         k = 0
         while k < len(order):
-            sol = mpmath.odefun(_rhs(p.kind, pars + (mpmath.mpf(sig),), mpmath, extras), t0, y0)
+            sol = mpmath.odefun(rhs(p.kind, pars + (mpmath.mpf(sig),), mpmath, extras), t0, y0)
             a = t0
             while True:  # bracket the next zero of σẋ, then a root
                 b = a + h
@@ -580,7 +498,7 @@ def invariants(sol: Solution) -> dict:
 
 def closed_form_error(sol: Solution) -> float:
     """max |(x, y) − closed form| / scale for the linear model (the closed form of
-    :func:`quasicentral.motion.linear`, exact in all three regimes), at the solution's precision."""
+    :func:`quasicentral.models.motion.linear`, exact in all three regimes), at the solution's precision."""
     from quasicentral.models import motion
 
     p = sol.problem
@@ -590,7 +508,7 @@ def closed_form_error(sol: Solution) -> float:
     if not hp:
         x, y = motion.linear(np.asarray(sol.t, dtype=float), float(p.R0), float(p.v0), math.sqrt(float(p.omega2)),
                              float(p.kappa))
-        return float(max(np.max(np.abs(x - sol.x)), np.max(np.abs(y - sol.y))) / _scale(p))
+        return float(max(np.max(np.abs(x - sol.x)), np.max(np.abs(y - sol.y))) / scale(p))
     with mpmath.workdps(int(-math.log10(sol.tol)) + 15):
         x, y = motion.linear(list(sol.t), p.R0, p.v0, mpmath.sqrt(p.omega2), p.kappa, ops=motion.MP)
         err = max(max(abs(a - b) for a, b in zip(x, sol.x)), max(abs(a - b) for a, b in zip(y, sol.y)))
@@ -602,7 +520,7 @@ def difference(a: Solution, b: Solution) -> float:
     with mpmath.workdps(60):
         d = max(max(abs(mpmath.mpf(p) - mpmath.mpf(q)) for p, q in zip(a.x, b.x)),
                 max(abs(mpmath.mpf(p) - mpmath.mpf(q)) for p, q in zip(a.y, b.y)))
-        return float(d) / _scale(a.problem)
+        return float(d) / scale(a.problem)
 
 
 def self_check(model: str, params: dict, t, tol: float, *, method: str = "auto") -> float:
@@ -614,12 +532,7 @@ def self_check(model: str, params: dict, t, tol: float, *, method: str = "auto")
 
 
 # --- validity of the paper's approximations ----------------------------------------------------
-APPROXIMATIONS = {
-    "ellipse": "no drag, small swings: the ellipse (13)",
-    "linear": "linear drag, small swings: the closed form (19)/(21) (and the overdamped regime)",
-    "quadratic": "quadratic drag, small swings: (26)–(27) integrated exactly",
-    "quadratic-first-order": "quadratic drag, small swings and first order in β: the closed form (28)–(30)",
-}
+APPROXIMATIONS = {m.value: m.description for m in registry.APPROXIMATIONS}
 
 
 def approximation_error(model: str, params: dict, t, *, tol: float = 1e-11, against: str = "spherical") -> np.ndarray:
@@ -631,7 +544,7 @@ def approximation_error(model: str, params: dict, t, *, tol: float = 1e-11, agai
         approximation_error(model, params, t, *, tol=1e-11, against="spherical") -> ndarray
 
     * ``model`` — ``"ellipse"``, ``"linear"``, ``"quadratic"`` or ``"quadratic-first-order"``
-      (the names of :data:`quasicentral.motion.MODELS`);
+      (:data:`quasicentral.models.registry.APPROXIMATIONS`);
     * ``params`` — a mapping with ``R0`` [m], ``v0`` [m/s], ``l`` [m] and ``g`` [m/s²] (or
       ``omega2`` = g/l with ``l``), and the drag: ``kappa`` [1/s] (R = 2κmv) or ``beta`` [1/m]
       (R = mβv²); floats or decimal strings;
@@ -652,8 +565,7 @@ def approximation_error(model: str, params: dict, t, *, tol: float = 1e-11, agai
     from quasicentral.models import motion
     from quasicentral.models import quadratic
 
-    if model not in APPROXIMATIONS:
-        raise ModelError(f"unknown model {model!r}; choose from {', '.join(APPROXIMATIONS)}")
+    model = registry.lookup(model, registry.APPROXIMATIONS, ModelError).value
     if against not in ("spherical", "small-swing"):
         raise ModelError("against must be 'spherical' or 'small-swing'")
     shape = np.shape(t)
