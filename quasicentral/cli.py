@@ -14,6 +14,8 @@ import sys
 import time
 from pathlib import Path
 
+from quasicentral.models.parameters import G_STANDARD
+
 EXIT_OK, EXIT_UNEXPECTED, EXIT_USAGE = 0, 1, 2
 MAX_DPS = 2000
 VERIFY_MAX_DPS = 300  # the ladder doubles it, and every in-domain point is evaluated at both rungs
@@ -43,6 +45,8 @@ def _positive_int(name: str, upper: int):
 
 def build_parser() -> argparse.ArgumentParser:
     from quasicentral.engine.catalog import SOURCES
+    from quasicentral.models.period import METHODS as PERIOD_METHODS, SERIES_MAX_TERMS
+    from quasicentral.models.registry import TRAJECTORY, names
 
     p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.")
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
@@ -73,10 +77,12 @@ def build_parser() -> argparse.ArgumentParser:
     amp.add_argument("--amplitude-deg", metavar="A")
     amp.add_argument("--amplitude-rad", metavar="A")
     amp.add_argument("--complement-rad", metavar="D", help="δ = π − φ0 (full accuracy near π)")
-    pe.add_argument("--l", metavar="L", default="1", help="length in m (default 1)")
-    pe.add_argument("--g", metavar="G", default="9.81", help="gravity in m/s² (default 9.81)")
-    pe.add_argument("--method", choices=("agm", "series", "ellipk", "quad", "ode"), default="ellipk")
-    pe.add_argument("--terms", type=_positive_int("--terms", 10**6), default=4, help="terms of the series (66)")
+    pe.add_argument("--l", metavar="L", default=None, help="length in m (default 1)")
+    pe.add_argument("--g", metavar="G", default=None, help=f"gravity in m/s² (default {G_STANDARD})")
+    pe.add_argument("--method", choices=PERIOD_METHODS, default=None,
+                    help=f"route to T/T0: {', '.join(PERIOD_METHODS)} (default ellipk)")
+    pe.add_argument("--terms", type=_positive_int("--terms", SERIES_MAX_TERMS), default=None,
+                    help="terms of the series (66), with --method series (default 4)")
     pe.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
                     help="decimal digits (inputs read exactly; agm and ellipk results correctly rounded)")
     pe.add_argument("--table", action="store_true", help="T/T0 from 5° to 179.99° at 20 digits, two methods")
@@ -241,70 +247,122 @@ def _write_atomic(path: Path, text: str) -> None:
         raise UsageError(f"cannot write {path}: {exc.strerror}") from None
 
 
-def _period(args) -> int:
+def _warn(message: str) -> None:
+    print(f"quasicentral: warning: {message}", file=sys.stderr)
+
+
+def _period_refuse_ignored(args) -> None:
+    """Options that would be silently ignored are refused, naming the option."""
+    if args.table:
+        for flag, value in (("--amplitude-deg", args.amplitude_deg), ("--amplitude-rad", args.amplitude_rad),
+                            ("--complement-rad", args.complement_rad), ("--dps", args.dps),
+                            ("--method", args.method), ("--terms", args.terms), ("--l", args.l), ("--g", args.g)):
+            if value is not None:
+                raise UsageError(f"{flag} has no effect with --table (T/T0 from 5° to 179.99° at 20 digits)")
+    elif args.terms is not None and args.method != "series":
+        raise UsageError(f"--terms applies to --method series only, not {args.method or 'ellipk'}")
+
+
+def _period_table(args) -> int:
     from quasicentral.models import period as P
 
-    if args.table:
-        rows = P.table()
-        if args.json:
-            print(json.dumps({"table": rows}, indent=2))
-        else:
-            print("amplitude   T/T0 (AGM, correctly rounded)   quadrature agrees")
-            for r in rows:
-                print(f"{r['amplitude_deg']:>9}°  {r['T_over_T0']:<30}  {'yes' if r['agree'] else 'NO'}")
-        return EXIT_OK if all(r["agree"] for r in rows) else EXIT_UNEXPECTED
-    given = {"phi0": args.amplitude_rad, "amplitude_deg": args.amplitude_deg, "delta": args.complement_rad}
-    if all(v is None for v in given.values()):
-        raise UsageError("give --amplitude-deg, --amplitude-rad or --complement-rad")
-    length, grav = finite_float(args.l, "--l"), finite_float(args.g, "--g")
-    if length <= 0:
-        raise UsageError(f"--l must be a positive length, not {args.l}")
-    if grav <= 0:
-        raise UsageError(f"--g must be positive, not {args.g}")
-    try:
-        out = {"method": args.method}
-        if args.dps:
-            import mpmath
+    rows = P.table()
+    if args.json:
+        print(json.dumps({"table": rows}, indent=2))
+    else:
+        print("amplitude   T/T0 (AGM, correctly rounded)   quadrature agrees")
+        for r in rows:
+            print(f"{r['amplitude_deg']:>9}°  {r['T_over_T0']:<30}  {'yes' if r['agree'] else 'NO'}")
+    return EXIT_OK if all(r["agree"] for r in rows) else EXIT_UNEXPECTED
 
-            kw = {k: v for k, v in given.items() if v is not None}
-            if args.method in ("agm", "ellipk"):
-                ratio_text = P.period_ratio_rounded(digits=args.dps, method=args.method, **kw)
-            else:
-                ratio_text = mpmath.nstr(P.period_ratio_mp(dps=args.dps, method=args.method, terms=args.terms, **kw),
-                                         args.dps, strip_zeros=False)
-            with mpmath.workdps(args.dps + 10):
-                t0 = 2 * mpmath.pi * mpmath.sqrt(mpmath.mpf(args.l) / mpmath.mpf(args.g))
-                out["T"] = mpmath.nstr(t0 * mpmath.mpf(ratio_text), args.dps, strip_zeros=False)
-            out["T_over_T0"] = ratio_text
-            out["T0"] = mpmath.nstr(t0, args.dps, strip_zeros=False)
-            out["digits"] = args.dps
+
+def _period_input(args) -> dict:
+    """The amplitude or its complement as an exact decimal string, keyed as period.* takes it."""
+    from quasicentral.notation import numbers
+
+    given = {"phi0": ("--amplitude-rad", args.amplitude_rad), "amplitude_deg": ("--amplitude-deg", args.amplitude_deg),
+             "delta": ("--complement-rad", args.complement_rad)}
+    given = {k: (flag, v) for k, (flag, v) in given.items() if v is not None}
+    if not given:
+        raise UsageError("give --amplitude-deg, --amplitude-rad or --complement-rad")
+    (key, (flag, text)), = given.items()
+    try:
+        return {key: str(numbers.decimal(text, flag))}, flag
+    except numbers.NumberError as exc:
+        raise UsageError(str(exc)) from None
+
+
+def _period(args) -> int:
+    from quasicentral.models import period as P
+    from quasicentral.notation import numbers
+
+    _period_refuse_ignored(args)
+    if args.table:
+        return _period_table(args)
+    kw, flag = _period_input(args)
+    method = args.method or "ellipk"
+    terms = args.terms or 4
+    l_text, g_text = args.l or "1", args.g or str(G_STANDARD)
+    length, grav = finite_float(l_text, "--l"), finite_float(g_text, "--g")
+    if length <= 0:
+        raise UsageError(f"--l must be a positive length, not {l_text}")
+    if grav <= 0:
+        raise UsageError(f"--g must be positive, not {g_text}")
+    try:
+        out = {"method": method}
+        if args.dps:
+            out.update(_period_digits(P, kw, method, terms, args.dps, l_text, g_text))
         else:
-            val = {k: finite_float(v, "--" + k.replace("phi0", "amplitude-rad").replace("_", "-")) for k, v in given.items() if v is not None}
-            if "amplitude_deg" in val:
-                val = {"phi0": math.radians(val.pop("amplitude_deg"))}
-            ratio = float(P.period_ratio(val.get("phi0"), delta=val.get("delta"), method=args.method, terms=args.terms))
+            ratio = float(P.period_ratio(**kw, method=method, terms=terms))
             t0 = 2 * math.pi * math.sqrt(length / grav)
             out.update({"T": t0 * ratio, "T_over_T0": ratio, "T0": t0})
-        if args.method == "series":
-            import numpy as np
-
-            c = P._complement_sine(phi0=math.radians(float(args.amplitude_deg)) if args.amplitude_deg else
-                                   (float(args.amplitude_rad) if args.amplitude_rad else None),
-                                   delta=float(args.complement_rad) if args.complement_rad else None)
-            _, tail = P.series_ratio(np.array([1 - float(c) ** 2]), args.terms)
-            out["terms"] = args.terms
-            out["error_estimate"] = float(tail[0])
+        if method == "series":
+            _series_warning(P, kw, terms, out, args.dps or 16)
     except P.DomainError as exc:
+        raise UsageError(f"{flag}: {exc}") from None
+    except numbers.NumberError as exc:
         raise UsageError(str(exc)) from None
-    if not all(math.isfinite(float(v)) for k, v in out.items() if k in ("T", "T_over_T0", "error_estimate")):
-        raise UsageError("the result is not finite for these inputs (e.g. a series truncation at an amplitude "
-                         "where its error bound diverges)")
+    if not all(math.isfinite(float(v)) for k, v in out.items() if k in ("T", "T_over_T0")):
+        raise UsageError(f"the result is not finite for {flag} {next(iter(kw.values()))}")
+    if "warning" in out:
+        _warn(out["warning"])
     if args.json:
         print(json.dumps(out, indent=2, allow_nan=False))
     else:
         for k, v in out.items():
             print(f"{k:15s} {v}")
     return EXIT_OK
+
+
+def _period_digits(P, kw, method, terms, dps, l_text, g_text) -> dict:
+    import mpmath
+
+    if method in ("agm", "ellipk"):
+        ratio_text = P.period_ratio_rounded(digits=dps, method=method, **kw)
+    else:
+        ratio_text = mpmath.nstr(P.period_ratio_mp(dps=dps, method=method, terms=terms, **kw), dps, strip_zeros=False)
+    with mpmath.workdps(dps + 10):
+        t0 = 2 * mpmath.pi * mpmath.sqrt(mpmath.mpf(l_text) / mpmath.mpf(g_text))
+        return {"T": mpmath.nstr(t0 * mpmath.mpf(ratio_text), dps, strip_zeros=False), "T_over_T0": ratio_text,
+                "T0": mpmath.nstr(t0, dps, strip_zeros=False), "digits": dps}
+
+
+def _series_warning(P, kw, terms, out, printed_digits) -> None:
+    """The series' error estimate, and how many digits hold when fewer than are printed."""
+    value, tail = (float(a) for a in P.series_error(**kw, terms=terms))
+    out["terms"] = terms
+    out["error_estimate"] = tail if math.isfinite(tail) else None
+    rel = tail / value if math.isfinite(tail) else math.inf
+    if rel >= 0.1:
+        bound = f"{tail:.2g}" if math.isfinite(tail) else "unbounded"
+        raise UsageError(f"--terms: the series (66) truncated after {terms} terms holds no digit here (error "
+                         f"estimate {bound} for T/T0 ≈ {value:.3g}); use more terms or --method ellipk")
+    held = max(0, int(math.floor(-math.log10(rel)))) if rel > 0 else printed_digits
+    if held < printed_digits:
+        out["digits"] = held
+        bound = f"{tail:.2g}" if math.isfinite(tail) else "unbounded"
+        out["warning"] = (f"the series (66) truncated after {terms} terms holds about {held} significant digits "
+                          f"here (error estimate {bound}); use more --terms or --method ellipk")
 
 
 def _trajectory(args) -> int:
@@ -379,15 +437,13 @@ def _trajectory_run(args, motion, mpmath) -> int:
 
 
 def _exact_number(text: str, name: str):
-    import mpmath
+    """An mpmath number from a decimal string, at the working precision."""
+    from quasicentral.notation import numbers
 
     try:
-        val = mpmath.mpf(text.strip())
-    except (ValueError, TypeError, AttributeError):
-        raise UsageError(f"{name} must be a number, not {text!r}") from None
-    if not mpmath.isfinite(val):
-        raise UsageError(f"{name} must be finite, not {text!r}")
-    return val
+        return numbers.to_mpf(text, name)
+    except numbers.NumberError as exc:
+        raise UsageError(str(exc)) from None
 
 
 def _times(args, num):
@@ -508,14 +564,14 @@ _COMMANDS = {"charts": _charts, "scene": _scene, "report": _report, "figures": _
 
 
 def finite_float(text: str, name: str) -> float:
-    """Parse a finite float for the CLI (NaN and infinities are bad input)."""
+    """A finite double from a decimal string (:mod:`quasicentral.notation.numbers`); bad input
+    is a UsageError naming the option."""
+    from quasicentral.notation import numbers
+
     try:
-        val = float(text)
-    except ValueError:
-        raise UsageError(f"{name} must be a number, not {text!r}") from None
-    if not math.isfinite(val):
-        raise UsageError(f"{name} must be finite, not {text!r}")
-    return val
+        return numbers.to_float(text, name)
+    except numbers.NumberError as exc:
+        raise UsageError(str(exc)) from None
 
 
 if __name__ == "__main__":
