@@ -12,6 +12,7 @@ import json
 import math
 import sys
 import time
+import warnings
 from pathlib import Path
 
 from quasicentral.models.parameters import G_STANDARD
@@ -89,7 +90,7 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--json", action="store_true")
 
     tr = sub.add_parser("trajectory", help="the motion of a small-swing spherical pendulum x(t), y(t)")
-    tr.add_argument("--model", required=True, metavar="MODEL")
+    tr.add_argument("--model", required=True, metavar="MODEL", help=f"one of {names(TRAJECTORY)}")
     tr.add_argument("--R0", required=True, metavar="X", help="initial distance from the vertical, m")
     tr.add_argument("--v0", required=True, metavar="V", help="initial speed perpendicular to R0, m/s")
     tr.add_argument("--omega2", metavar="G_OVER_L", help="Ω² = g/l, 1/s²")
@@ -101,7 +102,7 @@ def build_parser() -> argparse.ArgumentParser:
     tr.add_argument("--t", metavar="T1,T2,...")
     tr.add_argument("--t0", metavar="A")
     tr.add_argument("--t1", metavar="B")
-    tr.add_argument("--n", type=_positive_int("--n", 10**7), metavar="N")
+    tr.add_argument("--n", type=_positive_int("--n", MAX_POINTS), metavar="N", help="number of times from --t0 to --t1")
     tr.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None)
     fmt = tr.add_mutually_exclusive_group()
     fmt.add_argument("--json", action="store_true")
@@ -365,13 +366,17 @@ def _series_warning(P, kw, terms, out, printed_digits) -> None:
                           f"here (error estimate {bound}); use more --terms or --method ellipk")
 
 
+MAX_POINTS = 10**6  # --n, and the number of --t values
+MAX_POINTS_DPS = 10**4  # the same with --dps (mpmath evaluates point by point)
+
+
 def _trajectory(args) -> int:
     import mpmath
 
     from quasicentral.models import motion
 
     if args.model not in motion.MODELS:
-        raise UsageError(f"unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
+        raise UsageError(f"--model: unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
     if args.dps:
         # numbers are read, and the times spaced, at the asked precision plus guard digits
         with mpmath.workdps(args.dps + 20):
@@ -379,40 +384,74 @@ def _trajectory(args) -> int:
     return _trajectory_run(args, motion, mpmath)
 
 
-def _trajectory_run(args, motion, mpmath) -> int:
-    num = (lambda text, name: _exact_number(text, name)) if args.dps else (lambda text, name: finite_float(text, name))
-    R0, v0 = num(args.R0, "--R0"), num(args.v0, "--v0")
-    if args.omega2 is not None:
-        if args.l is not None or args.g is not None:
-            raise UsageError("give --omega2 or --l and --g, not both")
-        omega2 = num(args.omega2, "--omega2")
-    elif args.l is not None and args.g is not None:
-        length, grav = num(args.l, "--l"), num(args.g, "--g")
-        if length <= 0:
-            raise UsageError(f"--l must be a positive length, not {args.l}")
-        if grav <= 0:
-            raise UsageError(f"--g must be positive, not {args.g}")
-        omega2 = grav / length
-    else:
-        raise UsageError("give --omega2, or --l and --g")
+def _trajectory_drag(args, num):
+    """(kappa, beta) for the model: --kappa is required by the linear model, --beta by the
+    quadratic ones; the other one is refused."""
     quadratic = args.model.startswith("quadratic")
     if args.beta is not None and not quadratic:
-        raise UsageError(f"model {args.model} takes --kappa, not --beta")
+        raise UsageError(f"--beta: model {args.model} takes --kappa, not --beta")
     if args.kappa is not None and quadratic:
-        raise UsageError(f"model {args.model} takes --beta, not --kappa")
+        raise UsageError(f"--kappa: model {args.model} takes --beta, not --kappa")
     if quadratic and args.beta is None:
-        raise UsageError(f"model {args.model} needs --beta (quadratic drag, 1/m)")
+        raise UsageError(f"--beta is required by model {args.model} (quadratic drag, 1/m)")
+    if args.model == "linear" and args.kappa is None:
+        raise UsageError("--kappa is required by model linear (linear drag, 1/s; --kappa 0 for none)")
     kappa = num(args.kappa, "--kappa") if args.kappa is not None else 0
     beta = num(args.beta, "--beta") if args.beta is not None else 0
     if args.model == "ellipse" and args.kappa is not None and kappa != 0:
-        raise UsageError("model ellipse has no drag: leave out --kappa")
+        raise UsageError("--kappa: model ellipse has no drag; leave out --kappa")
+    return kappa, beta
+
+
+def _trajectory_pendulum(args, num):
+    """(Ω², l, g): from --omega2, or from --l and --g (then R0 must stay below l)."""
+    if args.omega2 is not None:
+        if args.l is not None or args.g is not None:
+            raise UsageError("--omega2: give --omega2 or --l and --g, not both")
+        return num(args.omega2, "--omega2"), None, None
+    if args.l is None or args.g is None:
+        raise UsageError("give --omega2, or --l and --g")
+    length, grav = num(args.l, "--l"), num(args.g, "--g")
+    if length <= 0:
+        raise UsageError(f"--l must be a positive length, not {args.l}")
+    if grav <= 0:
+        raise UsageError(f"--g must be positive, not {args.g}")
+    return grav / length, length, grav
+
+
+def _trajectory_run(args, motion, mpmath) -> int:
+    num = (lambda text, name: _exact_number(text, name)) if args.dps else (lambda text, name: finite_float(text, name))
+    R0, v0 = num(args.R0, "--R0"), num(args.v0, "--v0")
+    omega2, length, grav = _trajectory_pendulum(args, num)
+    kappa, beta = _trajectory_drag(args, num)
     times = _times(args, num)
+    import numpy as np
+
     try:
-        x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, beta, dps=args.dps)
-    except (motion.ParameterError, ValueError) as exc:
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # a failure is reported below, in one line
+            x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, beta, dps=args.dps, length=length,
+                                     g=grav)
+    except motion.ParameterError as exc:
+        raise UsageError(_name_option(str(exc), exc.name)) from None
+    except (ValueError, ArithmeticError) as exc:
         raise UsageError(str(exc)) from None
     if not all(mpmath.isfinite(v) for v in list(times) + list(x) + list(y)):
         raise UsageError("the result is not finite for these inputs (a time or a value overflows)")
+    warning = None
+    if args.model == "quadratic-first-order":
+        warning = motion.first_order_warning(motion.Swing(R0, v0, omega2, 0, beta), float(max(times)))
+    return _trajectory_print(args, times, x, y, warning, mpmath)
+
+
+def _name_option(message: str, name: str | None) -> str:
+    """'R0 must be …' → '--R0 must be …'; other messages get the option as a prefix."""
+    if name not in ("R0", "v0", "omega2", "kappa", "beta", "t", "l", "g"):
+        return message
+    return "--" + message if message.startswith(name + " ") else f"--{name}: {message}"
+
+
+def _trajectory_print(args, times, x, y, warning, mpmath) -> int:
     if args.dps:
         fmt = lambda a: mpmath.nstr(a, args.dps, strip_zeros=False)  # noqa: E731
     else:
@@ -423,6 +462,9 @@ def _trajectory_run(args, motion, mpmath) -> int:
            "t": [fmt(a) for a in times], "x": [fmt(a) for a in x], "y": [fmt(a) for a in y]}
     if args.dps:
         doc["digits"] = args.dps
+    if warning:
+        doc["warning"] = warning
+        _warn(warning)
     if args.csv:
         print("t,x,y")
         for a, b, c in zip(doc["t"], doc["x"], doc["y"]):
@@ -453,12 +495,17 @@ def _times(args, num):
         parts = [p for p in args.t.split(",") if p.strip()]
         if not parts:
             raise UsageError("--t is an empty list of times")
+        limit = MAX_POINTS_DPS if args.dps else MAX_POINTS
+        if len(parts) > limit:
+            raise UsageError(f"--t has {len(parts)} times; at most {limit}{' with --dps' if args.dps else ''}")
         times = [num(p, "--t") for p in parts]
     elif None not in (args.t0, args.t1, args.n):
         a, b = num(args.t0, "--t0"), num(args.t1, "--t1")
         if b < a:
             raise UsageError("--t1 must not be before --t0")
         n = args.n
+        if args.dps and n > MAX_POINTS_DPS:
+            raise UsageError(f"--n must be at most {MAX_POINTS_DPS} with --dps (each point is evaluated in mpmath)")
         times = [a + (b - a) * i / (n - 1) for i in range(n)] if n > 1 else [a]
     else:
         raise UsageError("give the times: --t T1,T2,... or --t0 A --t1 B --n N")

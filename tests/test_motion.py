@@ -110,7 +110,7 @@ def test_cli_trajectory_contract(capsys):
     ["--model", "nosuch"], ["--t", "-1"], ["--beta", "0.1"],
 ])
 def test_cli_trajectory_bad_input(args, capsys):
-    base = {"--model": "linear", "--R0": "0.1", "--v0": "0.1", "--omega2": "10", "--t": "0,1"}
+    base = {"--model": "linear", "--R0": "0.1", "--v0": "0.1", "--omega2": "10", "--kappa": "0", "--t": "0,1"}
     opts = dict(base)
     opts.update(dict(zip(args[::2], args[1::2])))
     argv = ["trajectory"] + [a for kv in opts.items() for a in kv]
