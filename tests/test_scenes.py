@@ -273,7 +273,8 @@ BAD = [
     ('drag = "quadratic"', 'drag = "cubic"', "medium.drag", 8, "cubic"),
     ('drag = "quadratic"', "drag = 2", "medium.drag", 8, "string"),
     ("coefficient = 0.5", 'coefficient = "0.5 1/s"', "medium.coefficient", 9, "rate"),
-    ("coefficient = 0.5", 'coefficient = "0.5 furlong"', "medium.coefficient", 9, "unknown unit"),
+    ("coefficient = 0.5", 'coefficient = "0.5 blorp"', "medium.coefficient", 9, "unknown unit"),
+    ("coefficient = 0.5", 'coefficient = "0.5 furlong"', "medium.coefficient", 9, "length"),
     ("coefficient = 0.5", "coefficient = 0", "medium.coefficient", 9, "positive"),
     ("coefficient = 0.5", "", "medium.coefficient", 7, "missing"),
     ('drag = "quadratic"', 'drag = "none"', "medium.coefficient", 9, "no meaning"),
@@ -336,12 +337,12 @@ def test_key_lines_with_quotes_dotted_keys_and_multiline_strings():
     text = ('[scene]\nnotes = """two\nlength = 5\n"""\n[pendulum]\n"length" = 1.0\n'
             '[start]\ndisplacement = 0.1\nspeed = 0.1\n[medium]\ndrag = "none"\n'
             "[question]\nquantity = \"trajectory\"\nduration = 1.0\ntolerance = 'x'\n")
-    lines = scenes._key_lines(text)
+    lines = scenes.key_lines(text)
     assert lines["pendulum.length"] == 6 and "scene.length" not in lines
     with pytest.raises(scenes.SceneError) as exc:
         scenes.parse(text)
     assert (exc.value.key, exc.value.line) == ("question.tolerance", 15)
-    dotted = scenes._key_lines('pendulum.length = 1\n[start]\n  speed . "x" = 2\n')
+    dotted = scenes.key_lines('pendulum.length = 1\n[start]\n  speed . "x" = 2\n')
     assert dotted == {"pendulum.length": 1, "start": 2, "start.speed.x": 3}
 
 
