@@ -70,7 +70,8 @@ def to_float(text, name: str) -> float:
     """``text`` rounded once to the nearest double; an overflow is an error naming ``name``."""
     val = float(decimal(text, name))
     if not math.isfinite(val):
-        raise NumberError(f"{name} is too large for double precision: {text!r}", name)
+        shown = str(text) if len(str(text)) <= 40 else f"{str(text)[:20]}…({len(str(text))} characters)"
+        raise NumberError(f"{name} is too large for double precision: {shown}", name)
     return val
 
 
