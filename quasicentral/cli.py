@@ -335,8 +335,23 @@ def _period(args) -> int:
     return EXIT_OK
 
 
+#: the most digits the slow routes are allowed (seconds at these limits); the ODE at any
+#: precision also integrates at most ODE_MAX_QUARTER time units 1/Ω (a quarter period K(m))
+PERIOD_MAX_DPS = {"ode": 40, "quad": 300}
+ODE_MAX_QUARTER = 25.0
+
+
 def _period_digits(P, kw, method, terms, dps, l_text, g_text) -> dict:
     import mpmath
+
+    if dps > PERIOD_MAX_DPS.get(method, MAX_DPS):
+        raise UsageError(f"--dps: --method {method} takes at most {PERIOD_MAX_DPS[method]} digits (it would run for "
+                         "minutes); agm and ellipk take up to " + str(MAX_DPS))
+    if method == "ode":
+        quarter = float(P.period_ratio(**kw)) * math.pi / 2
+        if quarter > ODE_MAX_QUARTER:
+            raise UsageError(f"--method ode with --dps integrates a quarter period of {quarter:.3g} time units 1/Ω "
+                             f"here (more than {ODE_MAX_QUARTER:g}: minutes); use --method agm or ellipk")
 
     if method in ("agm", "ellipk"):
         ratio_text = P.period_ratio_rounded(digits=dps, method=method, **kw)

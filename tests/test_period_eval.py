@@ -189,6 +189,8 @@ def test_cli_series_says_how_many_digits_hold_or_refuses(capsys):
     (["--amplitude-deg", "10", "--g", "1e999"], "--g"),
     (["--amplitude-deg", "10", "--dps", "100000"], "--dps"),
     (["--amplitude-deg", "10", "--method", "series", "--terms", "10000001"], "--terms"),
+    (["--amplitude-deg", "60", "--method", "ode", "--dps", "41"], "--dps"),
+    (["--complement-rad", "1e-300", "--method", "ode", "--dps", "20"], "--method ode"),
 ])
 def test_cli_period_refusals_name_the_option(capsys, args, named):
     assert main(["period", *args]) == 2

@@ -52,43 +52,57 @@ class System(str, Enum):
 
 def rhs(kind: System, pars, lib=math, extras: bool = False):
     """f(t, s) for the state of ``kind`` (plus s, D when ``extras``); ``pars`` as
-    :meth:`reference.Problem.pars` (with σ appended for planar kinds); ``lib`` is math or mpmath."""
-    sqrt = lib.sqrt
-    kind = System(kind)
-    if kind is System.LINEAR:
-        w2, g2 = pars
+    :meth:`reference.Problem.pars` (with σ appended for planar kinds); ``lib`` is math, mpmath
+    or heyoka."""
+    return _SYSTEMS[System(kind)](pars, lib.sqrt, extras)
 
-        def f(_t, s):
-            x, y, u, w = s[0], s[1], s[2], s[3]
-            out = [u, w, -w2 * x - g2 * u, -w2 * y - g2 * w]
-            if extras:
-                v2 = u * u + w * w
-                out += [sqrt(v2), g2 * v2]
-            return out
-    elif kind is System.QUADRATIC:
-        w2, b = pars
 
-        def f(_t, s):
-            x, y, u, w = s[0], s[1], s[2], s[3]
-            sp = sqrt(u * u + w * w)
-            out = [u, w, -w2 * x - b * u * sp, -w2 * y - b * w * sp]
-            if extras:
-                out += [sp, b * sp * sp * sp]
-            return out
-    elif kind is System.QUADRATIC_PLANAR:  # σ = sign ẋ given (None: taken from ẋ, the kinked law itself)
-        w2, b, sig0 = pars
+def _linear(pars, sqrt, extras):
+    w2, g2 = pars
 
-        def f(_t, s):
-            x, u = s[0], s[1]
-            sig = sig0 if sig0 is not None else math.copysign(1.0, u)
-            out = [u, -w2 * x - sig * b * u * u]
-            if extras:
-                out += [sig * u, sig * b * u * u * u]
-            return out
-    elif kind in (System.SPHERICAL_LINEAR, System.SPHERICAL_QUADRATIC):
+    def f(_t, s):
+        x, y, u, w = s[0], s[1], s[2], s[3]
+        out = [u, w, -w2 * x - g2 * u, -w2 * y - g2 * w]
+        if extras:
+            v2 = u * u + w * w
+            out += [sqrt(v2), g2 * v2]
+        return out
+
+    return f
+
+
+def _quadratic(pars, sqrt, extras):
+    w2, b = pars
+
+    def f(_t, s):
+        x, y, u, w = s[0], s[1], s[2], s[3]
+        sp = sqrt(u * u + w * w)
+        out = [u, w, -w2 * x - b * u * sp, -w2 * y - b * w * sp]
+        if extras:
+            out += [sp, b * sp * sp * sp]
+        return out
+
+    return f
+
+
+def _quadratic_planar(pars, sqrt, extras):
+    w2, b, sig0 = pars  # σ = sign ẋ given (None: taken from ẋ, the kinked law itself)
+
+    def f(_t, s):
+        x, u = s[0], s[1]
+        sig = sig0 if sig0 is not None else math.copysign(1.0, u)
+        out = [u, -w2 * x - sig * b * u * u]
+        if extras:
+            out += [sig * u, sig * b * u * u * u]
+        return out
+
+    return f
+
+
+def _spherical(quad: bool):
+    def make(pars, sqrt, extras):
         ln, g, drag = pars
         l2 = ln * ln
-        quad = kind is System.SPHERICAL_QUADRATIC
 
         def f(_t, s):
             X, Y, U, W = s[0], s[1], s[2], s[3]
@@ -102,18 +116,30 @@ def rhs(kind: System, pars, lib=math, extras: bool = False):
             if extras:
                 out += [sp, gam * v2]
             return out
-    else:  # System.SPHERICAL_QUADRATIC_PLANAR
-        ln, g, b, sig0 = pars
-        l2 = ln * ln
 
-        def f(_t, s):
-            X, U = s[0], s[1]
-            sig = sig0 if sig0 is not None else math.copysign(1.0, U)
-            Z = sqrt(l2 - X * X)
-            sp = sig * U * ln / Z  # the speed, analytic on a stretch of constant σ
-            v2 = sp * sp
-            out = [U, -b * sp * U - X * (v2 + g * Z) / l2]
-            if extras:
-                out += [sp, b * sp * v2]
-            return out
+        return f
+
+    return make
+
+
+def _spherical_planar(pars, sqrt, extras):
+    ln, g, b, sig0 = pars
+    l2 = ln * ln
+
+    def f(_t, s):
+        X, U = s[0], s[1]
+        sig = sig0 if sig0 is not None else math.copysign(1.0, U)
+        Z = sqrt(l2 - X * X)
+        sp = sig * U * ln / Z  # the speed, analytic on a stretch of constant σ
+        v2 = sp * sp
+        out = [U, -b * sp * U - X * (v2 + g * Z) / l2]
+        if extras:
+            out += [sp, b * sp * v2]
+        return out
+
     return f
+
+
+_SYSTEMS = {System.LINEAR: _linear, System.QUADRATIC: _quadratic, System.QUADRATIC_PLANAR: _quadratic_planar,
+            System.SPHERICAL_LINEAR: _spherical(False), System.SPHERICAL_QUADRATIC: _spherical(True),
+            System.SPHERICAL_QUADRATIC_PLANAR: _spherical_planar}
