@@ -46,8 +46,6 @@ def _positive_int(name: str, upper: int):
 
 def build_parser() -> argparse.ArgumentParser:
     from quasicentral.engine.catalog import SOURCES
-    from quasicentral.models.period import METHODS as PERIOD_METHODS, SERIES_MAX_TERMS
-    from quasicentral.models.registry import TRAJECTORY, names
 
     p = _Parser(prog="quasicentral", description="Re-derive and verify Brepta (1953) and the exact pendulum period.")
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
@@ -73,10 +71,37 @@ def build_parser() -> argparse.ArgumentParser:
     mu.add_argument("--per-entry", type=_positive_int("--per-entry", 50), default=None,
                     help="at most this many mutants per entry (default: all)")
 
+    _add_period(sub)
+    _add_trajectory(sub)
+
+    fg = sub.add_parser("figures", help="reproduce the texts' missing figures (CSV data and PNG plots)")
+    fg.add_argument("--out", default="figures", metavar="DIR")
+
+    _add_charts(sub)
+
+    rp = sub.add_parser("report", help="LaTeX reports (or handouts) regenerated from the verified derivations")
+    rp.add_argument("--out", default="reports", metavar="DIR", help="output directory (default reports)")
+    rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk")
+    rp.add_argument("--lang", choices=("en", "cs"), default="en", help="language (default en)")
+    rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
+    rp.add_argument("--all", action="store_true",
+                    help="every golden document: reports and handouts, English and Czech")
+
+    _add_scene(sub)
+
+    c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
+    c.add_argument("--source", choices=sorted(SOURCES))
+    c.add_argument("--json", action="store_true")
+    return p
+
+
+def _add_period(sub) -> None:
+    from quasicentral.models.period import METHODS as PERIOD_METHODS, SERIES_MAX_TERMS
+
     pe = sub.add_parser("period", help="the exact period of the simple pendulum, T and T/T0")
     amp = pe.add_mutually_exclusive_group()
-    amp.add_argument("--amplitude-deg", metavar="A")
-    amp.add_argument("--amplitude-rad", metavar="A")
+    amp.add_argument("--amplitude-deg", metavar="A", help="amplitude φ0 in degrees, 0 < A < 180 (read exactly)")
+    amp.add_argument("--amplitude-rad", metavar="A", help="amplitude φ0 in radians, 0 < A < π (read exactly)")
     amp.add_argument("--complement-rad", metavar="D", help="δ = π − φ0 (full accuracy near π)")
     pe.add_argument("--l", metavar="L", default=None, help="length in m (default 1)")
     pe.add_argument("--g", metavar="G", default=None, help=f"gravity in m/s² (default {G_STANDARD})")
@@ -87,53 +112,46 @@ def build_parser() -> argparse.ArgumentParser:
     pe.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
                     help="decimal digits (inputs read exactly; agm and ellipk results correctly rounded)")
     pe.add_argument("--table", action="store_true", help="T/T0 from 5° to 179.99° at 20 digits, two methods")
-    pe.add_argument("--json", action="store_true")
+    pe.add_argument("--json", action="store_true", help="print JSON (with 'digits' and 'warning' when they apply)")
+
+
+def _add_trajectory(sub) -> None:
+    from quasicentral.models.registry import TRAJECTORY, names
 
     tr = sub.add_parser("trajectory", help="the motion of a small-swing spherical pendulum x(t), y(t)")
     tr.add_argument("--model", required=True, metavar="MODEL", help=f"one of {names(TRAJECTORY)}")
     tr.add_argument("--R0", required=True, metavar="X", help="initial distance from the vertical, m")
     tr.add_argument("--v0", required=True, metavar="V", help="initial speed perpendicular to R0, m/s")
     tr.add_argument("--omega2", metavar="G_OVER_L", help="Ω² = g/l, 1/s²")
-    tr.add_argument("--l", metavar="L")
-    tr.add_argument("--g", metavar="G")
+    tr.add_argument("--l", metavar="L", help="length, m (with --g; then R0 must be below it)")
+    tr.add_argument("--g", metavar="G", help="gravity, m/s² (with --l)")
     drag = tr.add_mutually_exclusive_group()
     drag.add_argument("--kappa", metavar="K", help="linear drag, 1/s (R = 2κmv)")
     drag.add_argument("--beta", metavar="B", help="quadratic drag, 1/m (R = mβv²)")
-    tr.add_argument("--t", metavar="T1,T2,...")
-    tr.add_argument("--t0", metavar="A")
-    tr.add_argument("--t1", metavar="B")
+    tr.add_argument("--t", metavar="T1,T2,...", help="times, s (comma-separated, ≥ 0)")
+    tr.add_argument("--t0", metavar="A", help="first time, s (with --t1 and --n)")
+    tr.add_argument("--t1", metavar="B", help="last time, s")
     tr.add_argument("--n", type=_positive_int("--n", MAX_POINTS), metavar="N", help="number of times from --t0 to --t1")
-    tr.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None)
+    tr.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
+                    help="decimal digits (mpmath; inputs read exactly); default double precision")
     fmt = tr.add_mutually_exclusive_group()
-    fmt.add_argument("--json", action="store_true")
-    fmt.add_argument("--csv", action="store_true")
+    fmt.add_argument("--json", action="store_true", help="print JSON (with 'warning' when it applies)")
+    fmt.add_argument("--csv", action="store_true", help="print CSV t,x,y")
 
-    fg = sub.add_parser("figures", help="reproduce the texts' missing figures (CSV data and PNG plots)")
-    fg.add_argument("--out", default="figures", metavar="DIR")
 
+def _add_scene(sub) -> None:
+    sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
+    sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
+    sc.add_argument("--json", action="store_true", help="print the decision as JSON")
+    sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
+
+
+def _add_charts(sub) -> None:
     ch = sub.add_parser("charts", help="work–precision charts, stability maps, validity of the approximations")
     ch.add_argument("--out", default="charts", metavar="DIR", help="output directory (default charts)")
     ch.add_argument("--quick", action="store_true", help="a fast, coarse run (CI, tests)")
     ch.add_argument("--only", action="append", metavar="NAME", help="only this chart (repeatable)")
     ch.add_argument("--render-only", action="store_true", help="redraw the PNGs from the CSVs in DIR, measure nothing")
-
-    rp = sub.add_parser("report", help="LaTeX reports (or handouts) regenerated from the verified derivations")
-    rp.add_argument("--out", default="reports", metavar="DIR", help="output directory (default reports)")
-    rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk")
-    rp.add_argument("--lang", choices=("en", "cs"), default="en", help="language (default en)")
-    rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
-    rp.add_argument("--all", action="store_true",
-                    help="every golden document: reports and handouts, English and Czech")
-
-    sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
-    sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
-    sc.add_argument("--json", action="store_true")
-    sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
-
-    c = sub.add_parser("catalog", help="list the catalog: ids, dimensions, LaTeX-parser coverage")
-    c.add_argument("--source", choices=sorted(SOURCES))
-    c.add_argument("--json", action="store_true")
-    return p
 
 
 def main(argv: list[str] | None = None) -> int:
