@@ -334,16 +334,7 @@ def approximation_error(model: str, params: dict, t, *, tol: float = 1e-11, agai
     shape = np.shape(t)
     tt = np.ravel(np.asarray(t, dtype=float))
     params = dict(params)
-    beta_given = params.get("beta") not in (None, 0, 0.0, "0")
-    kappa_given = params.get("kappa") not in (None, 0, 0.0, "0")
-    if model == "ellipse" and (beta_given or kappa_given):
-        raise ModelError("the ellipse has no drag: leave out kappa and beta")
-    if model == "linear" and beta_given:
-        raise ModelError("the linear model takes kappa, not beta")
-    if model.startswith("quadratic") and kappa_given:
-        raise ModelError(f"model {model} takes beta, not kappa")
-    if model.startswith("quadratic") and not beta_given:
-        raise ModelError(f"model {model} needs beta (quadratic drag, 1/m)")
+    _check_drag(model, params)
     if against == "spherical":
         ref = solve("spherical", params, tt, tol=tol)
     else:
@@ -361,6 +352,20 @@ def approximation_error(model: str, params: dict, t, *, tol: float = 1e-11, agai
         x, y = _small_swing_quadratic(tt, R0, v0, om, bet, tol)
     err = np.hypot(np.asarray(x, dtype=float) - ref.x, np.asarray(y, dtype=float) - ref.y) / R0
     return err.reshape(shape)
+
+
+def _check_drag(model: str, params: dict) -> None:
+    """The drag law the approximation takes, and only that one."""
+    beta_given = params.get("beta") not in (None, 0, 0.0, "0")
+    kappa_given = params.get("kappa") not in (None, 0, 0.0, "0")
+    if model == "ellipse" and (beta_given or kappa_given):
+        raise ModelError("the ellipse has no drag: leave out kappa and beta", "kappa" if kappa_given else "beta")
+    if model == "linear" and beta_given:
+        raise ModelError("the linear model takes kappa, not beta", "beta")
+    if model.startswith("quadratic") and kappa_given:
+        raise ModelError(f"model {model} takes beta, not kappa", "kappa")
+    if model.startswith("quadratic") and not beta_given:
+        raise ModelError(f"model {model} needs beta (quadratic drag, 1/m)", "beta")
 
 
 def _small_swing_quadratic(tt, R0, v0, om, beta, tol):

@@ -151,53 +151,64 @@ def plot(decision: Decision, path) -> None:
                                  squeeze=False)
         axes = axes[0]
         if curves:
-            ax = axes[0]
-            rich = decision.richest.value
-            if s.quantity == "trajectory":
-                ax.plot(rich[0] * 1e3, rich[1] * 1e3, "k--", lw=0.6, label=f"{decision.richest.label} (richest)")
-                ax.plot(c.value[0] * 1e3, c.value[1] * 1e3, lw=0.9, label=f"{c.label} (chosen)")
-                ax.set_xlabel("x [mm]")
-                ax.set_ylabel("y [mm]")
-                ax.set_aspect("equal", adjustable="datalim")
-            else:
-                ax.plot(decision.times, rich, "k--", lw=0.6, label=f"{decision.richest.label} (richest)")
-                ax.plot(decision.times, c.value, lw=0.9, label=f"{c.label} (chosen)")
-                ax.set_xlabel("t [s]")
-                ax.set_ylabel("L [m²/s]")
-            ax.legend(fontsize=7)
-            ax.grid(True, lw=0.3)
-            ax = axes[1]
-            for lower, upper in zip(decision.ratings, decision.ratings[1:]):
-                if s.quantity == "trajectory":
-                    d = np.hypot(lower.value[0] - upper.value[0], lower.value[1] - upper.value[1])
-                else:
-                    d = np.abs(lower.value - upper.value)
-                ax.semilogy(decision.times, np.where(d > 0, d, np.nan), lw=0.8 if lower is not c else 1.4,
-                            label=f"{lower.label} − {upper.label}")
-            ax.axhline(s.tolerance, color="r", lw=0.8, ls=":", label="tolerance")
-            ax.axhline(decision.richest.estimated_error, color="k", lw=0.6, ls="--",
-                       label=f"{decision.richest.label}: own error")
-            low, high = ax.get_ylim()
-            ax.set_ylim(max(low, 1e-6 * min(s.tolerance, decision.richest.estimated_error)), high)
-            ax.set_xlabel("t [s]")
-            ax.set_ylabel(f"difference [{s.unit}]")
-            ax.legend(fontsize=7)
-            ax.grid(True, lw=0.3)
+            _plot_answer(axes[0], decision)
+            _plot_differences(axes[1], decision)
         else:
-            ax = axes[0]
-            labels = [r.label for r in decision.ratings]
-            errs = [r.estimated_error if math.isfinite(r.estimated_error) else np.nan for r in decision.ratings]
-            colors = ["tab:green" if r is c and decision.meets else "tab:gray" for r in decision.ratings]
-            ax.bar(range(len(labels)), errs, color=colors, log=True)
-            ax.scatter(range(len(labels)), [r.a_priori for r in decision.ratings], marker="_", s=200, color="k",
-                       label="a priori", zorder=3)
-            ax.axhline(s.tolerance, color="r", lw=0.8, ls=":", label="tolerance")
-            ax.set_xticks(range(len(labels)), labels, rotation=20, fontsize=7)
-            ax.set_ylabel(f"estimated error [{s.unit}]")
-            ax.legend(fontsize=7)
-            ax.grid(True, lw=0.3, axis="y")
+            _plot_estimates(axes[0], decision)
         # the title is the user's text: shown as typed, never parsed as mathtext
         fig.suptitle(f"{s.title or Path(s.source).stem}: {s.quantity} → {c.label}", fontsize=9, parse_math=False)
         fig.tight_layout()
         fig.savefig(path, format="png", metadata={"Software": None})
         plt.close(fig)
+
+
+def _plot_answer(ax, decision: Decision) -> None:
+    s, c, rich = decision.scene, decision.chosen, decision.richest.value
+    if s.quantity == "trajectory":
+        ax.plot(rich[0] * 1e3, rich[1] * 1e3, "k--", lw=0.6, label=f"{decision.richest.label} (richest)")
+        ax.plot(c.value[0] * 1e3, c.value[1] * 1e3, lw=0.9, label=f"{c.label} (chosen)")
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel("y [mm]")
+        ax.set_aspect("equal", adjustable="datalim")
+    else:
+        ax.plot(decision.times, rich, "k--", lw=0.6, label=f"{decision.richest.label} (richest)")
+        ax.plot(decision.times, c.value, lw=0.9, label=f"{c.label} (chosen)")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("L [m²/s]")
+    ax.legend(fontsize=7)
+    ax.grid(True, lw=0.3)
+
+
+def _plot_differences(ax, decision: Decision) -> None:
+    s, c = decision.scene, decision.chosen
+    for lower, upper in zip(decision.ratings, decision.ratings[1:]):
+        if s.quantity == "trajectory":
+            d = np.hypot(lower.value[0] - upper.value[0], lower.value[1] - upper.value[1])
+        else:
+            d = np.abs(lower.value - upper.value)
+        ax.semilogy(decision.times, np.where(d > 0, d, np.nan), lw=0.8 if lower is not c else 1.4,
+                    label=f"{lower.label} − {upper.label}")
+    ax.axhline(s.tolerance, color="r", lw=0.8, ls=":", label="tolerance")
+    ax.axhline(decision.richest.estimated_error, color="k", lw=0.6, ls="--",
+               label=f"{decision.richest.label}: own error")
+    low, high = ax.get_ylim()
+    ax.set_ylim(max(low, 1e-6 * min(s.tolerance, decision.richest.estimated_error)), high)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel(f"difference [{s.unit}]")
+    ax.legend(fontsize=7)
+    ax.grid(True, lw=0.3)
+
+
+def _plot_estimates(ax, decision: Decision) -> None:
+    s, c = decision.scene, decision.chosen
+    labels = [r.label for r in decision.ratings]
+    errs = [r.estimated_error if math.isfinite(r.estimated_error) else np.nan for r in decision.ratings]
+    colors = ["tab:green" if r is c and decision.meets else "tab:gray" for r in decision.ratings]
+    ax.bar(range(len(labels)), errs, color=colors, log=True)
+    ax.scatter(range(len(labels)), [r.a_priori for r in decision.ratings], marker="_", s=200, color="k",
+               label="a priori", zorder=3)
+    ax.axhline(s.tolerance, color="r", lw=0.8, ls=":", label="tolerance")
+    ax.set_xticks(range(len(labels)), labels, rotation=20, fontsize=7)
+    ax.set_ylabel(f"estimated error [{s.unit}]")
+    ax.legend(fontsize=7)
+    ax.grid(True, lw=0.3, axis="y")
