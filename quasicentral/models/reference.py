@@ -63,19 +63,12 @@ ModelError = ParameterError  # bad model, parameters or method
 
 # --- parameters -------------------------------------------------------------------------------
 @dataclass(frozen=True)
-class Problem:
-    """One initial-value problem.  Numbers are mpmath mpf read exactly (a float at its binary
-    value, a string as the decimal it spells); ``length`` and ``g`` only matter for the
-    spherical model (Ω² = g/l)."""
+class Problem(Swing):
+    """One initial-value problem: a :class:`Swing` (checked there) and the model.  Numbers are
+    mpmath mpf read exactly (a float at its binary value, a string as the decimal it spells);
+    ``length`` and ``g`` only matter for the spherical model (Ω² = g/l)."""
 
-    model: str
-    R0: object
-    v0: object
-    omega2: object
-    kappa: object = 0
-    beta: object = 0
-    length: object = None
-    g: object = None
+    model: str = "linear"
 
     @property
     def planar(self) -> bool:
@@ -88,7 +81,7 @@ class Problem:
         return System(base + ("-planar" if self.planar and self.model != "linear" else ""))
 
     def pars(self) -> tuple:
-        """The runtime parameters of the compiled system, in the order of :func:`_rhs`."""
+        """The runtime parameters of the compiled system, in the order of :func:`equations.rhs`."""
         if self.model == "linear":
             return (self.omega2, 2 * self.kappa)
         if self.model == "quadratic":
@@ -136,8 +129,7 @@ def problem(model: str, params: dict) -> Problem:
         raise ModelError("the quadratic model takes beta, not kappa", "kappa")
     if model == "spherical" and length is None:
         raise ModelError("the spherical model needs the length l (and g or omega2)", "l")
-    Swing(R0, v0, omega2, kappa, beta, length, g)  # raises ParameterError (= ModelError)
-    return Problem(model, R0, v0, omega2, kappa, beta, length, g)
+    return Problem(R0, v0, omega2, kappa, beta, length, g, model=model)  # checked by Swing
 
 
 # --- the systems ---------------------------------------------------------------------------

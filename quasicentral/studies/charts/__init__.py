@@ -52,6 +52,7 @@ from quasicentral.studies.charts.naive import (
 )
 from quasicentral.studies.charts.render import YES, render
 from quasicentral.studies.charts.timing import Settings, machine
+from quasicentral.models.parameters import G_STANDARD
 
 __all__ = ["CHARTS", "MAPS", "QUANTITIES", "ChartError", "Settings", "build", "render", "render_all", "read_csv",
            "read_table", "write_csv", "machine", "beta_fit", "measure_validity", "default_k_minus_e",
@@ -117,7 +118,7 @@ QUANTITIES = tuple(WORK_PRECISION)
 MAPS = tuple(STABILITY)
 CHARTS = tuple(f"workprecision-{q}" for q in QUANTITIES) + tuple(f"stability-{m}" for m in MAPS) + ("validity",)
 VALIDITY_TITLE = ("Validity of the paper's approximations against the full pendulum with drag "
-                  "(v0 = R0Ω/2, l = 1 m, g = 9.81 m/s²)")
+                  f"(v0 = R0Ω/2, l = 1 m, g = {G_STANDARD} m/s²)")
 
 
 def _chart(name: str):
