@@ -74,6 +74,13 @@ def _is_text(x) -> bool:
     return isinstance(x, (str, Decimal))
 
 
+def _inside(ctx, x, upper) -> bool:
+    """0 < x < upper everywhere (True for balls: their domain is checked in mpmath first)."""
+    if ctx is DOUBLE:
+        return bool(x.min(initial=math.inf) > 0 and x.max(initial=-math.inf) < upper) if x.size else True
+    return ctx is BALL or 0 < x < upper
+
+
 class HalfAngle:
     """s = sin(φ0/2) and c = cos(φ0/2) = sin(δ/2) of one input (amplitude in rad or deg, or the
     complement δ = π − φ0), each computed without cancellation in the context ``ctx``.  In
@@ -94,11 +101,11 @@ class HalfAngle:
             return
         if self.kind == "delta":
             d = ctx.read(raw, "the complement π − φ0")
-            ctx.require((d > 0) & (d < pi) if ctx is DOUBLE else 0 < d < pi, "the complement π − φ0 must be in (0, π)")
-            self.half, self.rest = (pi - d) / 2, d / 2
+            ctx.require(_inside(ctx, d, pi), "the complement π − φ0 must be in (0, π)")
+            self.half, self.rest = None, d / 2  # s = cos(δ/2), c = sin(δ/2): no π − δ
         elif self.kind == "phi0":
             a = ctx.read(raw, "the amplitude")
-            ctx.require((a > 0) & (a < pi) if ctx is DOUBLE else 0 < a < pi, "the amplitude must be in (0, π) rad")
+            ctx.require(_inside(ctx, a, pi), "the amplitude must be in (0, π) rad")
             self.half, self.rest = a / 2, None
         else:
             if _is_text(raw):
@@ -107,7 +114,7 @@ class HalfAngle:
             else:
                 a = ctx.read(raw, "the amplitude")
                 r = 180 - a
-            ctx.require((a > 0) & (a < 180) if ctx is DOUBLE else 0 < a < 180,
+            ctx.require(_inside(ctx, a, 180),
                         "the amplitude must be in (0, π) rad, i.e. (0°, 180°)")
             self.half, self.rest = a * pi / 360, r * pi / 360
 
