@@ -180,3 +180,19 @@ def test_cli_trajectory_refusals_name_the_option(args, named, capsys):
     code, out, err = _run(args + ([] if "--t0" in args else ["--t", "1"]), capsys)
     assert code == 2 and out == ""
     assert err.count("\n") == 1 and err.startswith("quasicentral: error:") and named in err, err
+
+
+def test_models_import_only_downward():
+    """The model layer imports nothing above it (engine, studies, documents, cli)."""
+    import ast
+    from pathlib import Path
+
+    import quasicentral.models as pkg
+
+    for path in Path(pkg.__file__).parent.glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
+                [node.module or ""] if isinstance(node, ast.ImportFrom) else []
+            for name in names:
+                assert not name.startswith(("quasicentral.engine", "quasicentral.studies", "quasicentral.documents",
+                                            "quasicentral.cli")), f"{path.name} imports {name}"

@@ -25,6 +25,7 @@ import mpmath
 import numpy as np
 
 from quasicentral.models import registry
+from quasicentral.models.equations import System, rhs
 from quasicentral.models.parameters import ParameterError, Swing
 
 __all__ = ["ParameterError", "Swing", "linear", "integrate_linear", "trajectory", "first_order_warning", "MODELS"]
@@ -193,8 +194,8 @@ def integrate_linear(t, R0, v0, Omega, kappa, rtol=1e-12):
     from scipy.integrate import solve_ivp
 
     t = np.asarray(t, dtype=float)
-    rhs = lambda _t, u: (u[2], u[3], -Omega**2 * u[0] - 2 * kappa * u[2], -Omega**2 * u[1] - 2 * kappa * u[3])  # noqa: E731
-    sol = solve_ivp(rhs, (0, float(t.max())), (R0, 0.0, 0.0, v0), method="DOP853", t_eval=t, rtol=rtol,
+    f = rhs(System.LINEAR, (Omega**2, 2 * kappa))
+    sol = solve_ivp(f, (0, float(t.max())), (R0, 0.0, 0.0, v0), method="DOP853", t_eval=t, rtol=rtol,
                     atol=rtol * max(R0, v0 / Omega) * 1e-3)
     if not sol.success:
         raise ParameterError(f"the integration failed: {sol.message}")
