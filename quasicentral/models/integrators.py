@@ -26,6 +26,28 @@ def initial(p, extras: bool) -> list:
     return st + ([z, z] if extras else [])
 
 
+def by_stretches(times, reach, turn):
+    """The restart at turning points, written once for every back end.  The requested times are
+    visited in increasing order; ``reach(target)`` returns the state at ``target``, or None when
+    a turning point (ẋ = 0 of a planar swing under quadratic drag) comes first — the back end
+    has then stopped there, at rest; ``turn()`` restarts from that point with σ = sign ẋ
+    flipped, so that every stretch is analytic and no step straddles the kink.  Returns (the
+    states in the order of ``times``, the number of turning points)."""
+    order = sorted(range(len(times)), key=lambda i: times[i])
+    out = [None] * len(times)
+    turns = 0
+    for i in order:
+        while (state := reach(times[i])) is None:
+            turn()
+            turns += 1
+        out[i] = state
+    return out, turns
+
+
+class _BranchFailed(ArithmeticError):
+    """A stretch's own analytic branch, continued past its turning point, blew up."""
+
+
 # --- back end: scipy DOP853 (Fortran) -----------------------------------------------------------
 def scale(p) -> float:
     """max(R0, v0/Ω) as a float: the size of the motion errors are measured against."""
@@ -69,35 +91,38 @@ def solve_dop853(p, times: list[float], tol: float, extras: bool, branchwise: bo
         finder = ode(lambda tt, y: cur["branch"](tt, y.tolist())).set_integrator("dop853", rtol=rtol, atol=atol,
                                                                                   nsteps=10**6)
     r.set_initial_value([float(a) for a in initial(p, extras)], 0.0)
-    out = [None] * len(times)
-    turns = 0
-    for i in order:
-        target = times[i]
-        while True:
-            if target - r.t <= 1e-10 / om:  # too short for DOP853: one Euler step, error ≤ 1e-20
-                out[i] = list(np.asarray(r.y) + (target - r.t) * np.asarray(cur["f"](r.t, list(r.y))))
-                break
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # failures are checked below (successful())
-                y = r.integrate(target)
-            crossed = planar and cur["sig"] * y[1] < 0  # the last step passed a turning point
-            if not crossed:
-                if not r.successful():
-                    if branchwise:  # a branch continued too far past a turning point: the safe law
-                        return solve_dop853(p, times, tol, extras, branchwise=False)
-                    raise ArithmeticError(f"dop853 failed (code {r.get_return_code()})")
-                out[i] = list(y)
-                break
-            # a turning point in (last accepted step, r.t): Newton on ẋ(t) with the same stretch
-            cur["branch"] = branch = rhs(kind, pars + (cur["sig"],), math, extras)
-            tz, yz = _turning_point(finder, branch, prev["t"], prev["y"], r.t, y, 0.01 * tol / om)
-            yz[1] = 0.0  # exactly at rest
-            cur["sig"] = -cur["sig"]
-            if branchwise:
-                cur["f"] = rhs(kind, pars + (cur["sig"],), math, extras)
-            turns += 1
-            prev.clear()
-            r.set_initial_value(yz, tz)
+
+    def reach(target):
+        if target - r.t <= 1e-10 / om:  # too short for DOP853: one Euler step, error ≤ 1e-20
+            return list(np.asarray(r.y) + (target - r.t) * np.asarray(cur["f"](r.t, list(r.y))))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # failures are checked below (successful())
+            y = r.integrate(target)
+        if not (planar and cur["sig"] * y[1] < 0):  # no turning point passed in the last step
+            if not r.successful():
+                if branchwise:  # a branch continued too far past a turning point: the safe law
+                    raise _BranchFailed
+                raise ArithmeticError(f"dop853 failed (code {r.get_return_code()})")
+            return list(y)
+        # a turning point in (last accepted step, r.t): Newton on ẋ(t) with the same stretch
+        cur["branch"] = branch = rhs(kind, pars + (cur["sig"],), math, extras)
+        tz, yz = _turning_point(finder, branch, prev["t"], prev["y"], r.t, y, 0.01 * tol / om)
+        yz[1] = 0.0  # exactly at rest
+        cur["at"] = (tz, yz)
+        return None
+
+    def turn():
+        cur["sig"] = -cur["sig"]
+        if branchwise:
+            cur["f"] = rhs(kind, pars + (cur["sig"],), math, extras)
+        prev.clear()
+        tz, yz = cur.pop("at")
+        r.set_initial_value(yz, tz)
+
+    try:
+        out, turns = by_stretches(times, reach, turn)
+    except _BranchFailed:
+        return solve_dop853(p, times, tol, extras, branchwise=False)
     return out, {"turning_points": turns}
 
 
@@ -169,8 +194,8 @@ def _heyoka_integrator(kind: str, extras: bool, tol: float):
     vs = hy.make_vars(*names)
     npar = System(kind).n_parameters
     pars = [hy.par[i] for i in range(npar)]
-    rhs = rhs(kind, pars, hy, extras)(None, vs)
-    sysl = list(zip(vs, rhs))
+    exprs = rhs(kind, pars, hy, extras)(None, vs)
+    sysl = list(zip(vs, exprs))
     kw = {"fp_type": fp, "tol": conv(mpmath.mpf(tol) / 10)}
     if prec:
         kw.update(prec=prec, compact_mode=True)
@@ -194,29 +219,30 @@ def solve_heyoka(p, times, tol: float, extras: bool):
     if p.planar:
         ta.reset_cooldowns()
     to_mp = (lambda a: mpmath.mpf(float(a))) if ta.state.dtype == float else (lambda a: mpmath.mpf(str(a)))  # noqa: E731
-    out = [None] * len(times)
-    turns = 0
     if not p.planar:
         # the grid must start at the current time: prepend t = 0 and drop its row
         grid = np.array([conv(mpmath.mpf(0))] + [conv(times[i]) for i in order], dtype=ta.state.dtype)
         res = ta.propagate_grid(grid)
         if res[0] != hy.taylor_outcome.time_limit:
             raise ArithmeticError(f"heyoka stopped: {res[0]}")
+        out = [None] * len(times)
         for j, i in enumerate(order):
             out[i] = [to_mp(a) for a in res[-1][j + 1]]
         return out, {"steps": None}
-    for i in order:
-        target = conv(times[i])
-        while True:
-            res = ta.propagate_until(target)
-            if res[0] == hy.taylor_outcome.time_limit:
-                out[i] = [to_mp(a) for a in ta.state]
-                break
-            if res[0] != hy.taylor_outcome(-1):
-                raise ArithmeticError(f"heyoka stopped: {res[0]}")
-            ta.state[1] = conv(mpmath.mpf(0))  # exactly at rest
-            ta.pars[-1] = -ta.pars[-1]
-            turns += 1
+
+    def reach(target):
+        res = ta.propagate_until(conv(target))
+        if res[0] == hy.taylor_outcome.time_limit:
+            return [to_mp(a) for a in ta.state]
+        if res[0] != hy.taylor_outcome(-1):
+            raise ArithmeticError(f"heyoka stopped: {res[0]}")
+        return None  # stopped at the event: a turning point
+
+    def turn():
+        ta.state[1] = conv(mpmath.mpf(0))  # exactly at rest
+        ta.pars[-1] = -ta.pars[-1]
+
+    out, turns = by_stretches(times, reach, turn)
     return out, {"turning_points": turns}
 
 
@@ -233,24 +259,29 @@ def solve_mpmath(p, times, tol: float, extras: bool):
             for i in order:
                 out[i] = list(sol(times[i]))
             return out, {}
-        sig, t0, turns = -1, mpmath.mpf(0), 0
         h = 2 * mpmath.pi / mpmath.sqrt(p.omega2) / 16
-        k = 0
-        while k < len(order):
-            sol = mpmath.odefun(rhs(p.kind, pars + (mpmath.mpf(sig),), mpmath, extras), t0, y0)
-            a = t0
+        st = {"sig": -1, "t0": mpmath.mpf(0), "y0": y0}
+
+        def start():
+            """The stretch from rest at t0 with σ fixed, and its turning point tz."""
+            sol = mpmath.odefun(rhs(p.kind, pars + (mpmath.mpf(st["sig"]),), mpmath, extras), st["t0"], st["y0"])
+            a = st["t0"]
             while True:  # bracket the next zero of σẋ, then a root
                 b = a + h
-                if sig * sol(b)[1] <= 0:
+                if st["sig"] * sol(b)[1] <= 0:
                     break
                 a = b
-            tz = mpmath.findroot(lambda tt: sol(tt)[1], (a, b), solver="anderson")
-            while k < len(order) and times[order[k]] <= tz:
-                out[order[k]] = list(sol(times[order[k]]))
-                k += 1
-            if k == len(order):
-                break
-            y0 = list(sol(tz))
-            y0[1] = mpmath.mpf(0)
-            t0, sig, turns = tz, -sig, turns + 1
+            st["sol"], st["tz"] = sol, mpmath.findroot(lambda tt: sol(tt)[1], (a, b), solver="anderson")
+
+        def reach(target):
+            return list(st["sol"](target)) if target <= st["tz"] else None
+
+        def turn():
+            y = list(st["sol"](st["tz"]))
+            y[1] = mpmath.mpf(0)
+            st.update(t0=st["tz"], y0=y, sig=-st["sig"])
+            start()
+
+        start()
+        out, turns = by_stretches(times, reach, turn)
         return out, {"turning_points": turns}
