@@ -160,6 +160,10 @@ def test_cli_first_order_out_of_range_warns(capsys):
     assert err.startswith("quasicentral: warning:") and err.count("\n") == 1
     code, out, err = _run(args[:3] + ["0.01"] + args[4:], capsys)  # β = 0.01: βR0·Ωt small
     assert code == 0 and "warning" not in json.loads(out) and err == ""
+    code, out, err = _run(args[:3] + ["1e300"] + args[4:], capsys)  # far out: warned, never an internal error
+    assert code == 0 and "out of its range" in json.loads(out)["warning"]
+    code, out, err = _run(["--model", "quadratic", "--beta", "1e300"] + args[4:], capsys)  # stiff: one line
+    assert code == 2 and err.count("\n") == 1 and "internal" not in err
 
 
 @pytest.mark.parametrize("args,named", [

@@ -219,12 +219,13 @@ def first_order_warning(swing: Swing, t_end: float) -> str | None:
     neglected second order is O((βA)²(1 + (Ωt/2)²)) of the amplitude A = max(R0, v0/Ω)
     (the a-priori estimate of the scenes)."""
     beta, A, Om = float(swing.beta), float(swing.scale), math.sqrt(float(swing.omega2))
-    second = (beta * A) ** 2 * (1 + (Om * t_end / 2) ** 2)
+    x, phase = beta * A, Om * t_end / 2
+    second = x * x * (1 + phase * phase)  # products overflow to inf (a power would raise)
     if not second > FIRST_ORDER_LIMIT:
         return None
     return (f"quadratic-first-order is out of its range here: the neglected second order in β is about "
             f"{min(second, 1e300):.2g} of the amplitude by t = {t_end:g} s (βA = {beta * A:.2g}); "
-            f"use --model quadratic")
+            "use --model quadratic")
 
 
 def trajectory(model: str, t, R0, v0, Omega2, kappa=0, beta=0, dps: int | None = None, *, length=None, g=None):
