@@ -13,7 +13,7 @@ from _timing import best_of, machine
 
 from quasicentral.models import motion
 
-OMEGA = math.sqrt(10.0)
+from quasicentral.models.parameters import FIGURE_OMEGA as OMEGA  # noqa: E402
 
 
 def ulp_error(kappa, n=400, t_end=12.0):

@@ -16,7 +16,9 @@ from _timing import best_of, machine
 
 from quasicentral.models import quadratic as Q
 
-OMEGA, R0 = math.sqrt(10.0), 0.1
+from quasicentral.models.parameters import FIGURE_OMEGA as OMEGA  # noqa: E402
+
+R0 = 0.1
 
 
 def main():

@@ -19,7 +19,7 @@ from quasicentral.studies import charts
 
 from quasicentral.models import reference as R
 
-OMEGA = math.sqrt(10.0)
+from quasicentral.models.parameters import FIGURE_OMEGA as OMEGA  # noqa: E402
 T = 2 * math.pi / OMEGA
 CASES = [
     ("linear", {"R0": 0.1, "v0": 0.1, "omega2": 10.0, "kappa": 0.4}, "linear drag (16)-(17)"),

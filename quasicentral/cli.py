@@ -24,7 +24,10 @@ import math
 import os
 import sys
 import time
+import warnings
 from pathlib import Path
+
+from quasicentral.models.parameters import G_STANDARD
 
 EXIT_OK, EXIT_UNEXPECTED, EXIT_USAGE = 0, 1, 2
 MAX_DPS = 2000
@@ -83,7 +86,6 @@ def _add_text_options(parser: argparse.ArgumentParser, source: bool = True) -> N
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from quasicentral.models.motion import MODELS  # the models' registry names the choices
 
     p = _Parser(prog="quasicentral", description="Re-derive every equation of a text with sympy, check it with mpmath and ball "
                 "arithmetic, and record its errata (the shipped texts, or a text of your own: new-text).",
@@ -140,39 +142,8 @@ def build_parser() -> argparse.ArgumentParser:
     mu.add_argument("--jobs", type=_positive_int("--jobs", 64), default=None, metavar="N",
                     help="worker processes, 1 to 64 (default: one per core)")
 
-    pe = sub.add_parser("period", help="the exact period of the simple pendulum, T and T/T0")
-    amp = pe.add_mutually_exclusive_group()
-    amp.add_argument("--amplitude-deg", metavar="A")
-    amp.add_argument("--amplitude-rad", metavar="A")
-    amp.add_argument("--complement-rad", metavar="D", help="δ = π − φ0 (full accuracy near π)")
-    pe.add_argument("--l", metavar="L", default="1", help="length in m (default 1)")
-    pe.add_argument("--g", metavar="G", default="9.81", help="gravity in m/s² (default 9.81)")
-    pe.add_argument("--method", choices=("agm", "series", "ellipk", "quad", "ode"), default="ellipk")
-    pe.add_argument("--terms", type=_positive_int("--terms", 10**6), default=4, help="terms of the series (66)")
-    pe.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
-                    help="decimal digits (inputs read exactly; agm and ellipk results correctly rounded)")
-    pe.add_argument("--table", action="store_true", help="T/T0 from 5° to 179.99° at 20 digits, two methods")
-    pe.add_argument("--json", action="store_true")
-
-    tr = sub.add_parser("trajectory", help="the motion of a small-swing spherical pendulum x(t), y(t)")
-    tr.add_argument("--model", required=True, choices=list(MODELS), metavar="MODEL",
-                    help=f"the model: {', '.join(MODELS)}")
-    tr.add_argument("--R0", required=True, metavar="X", help="initial distance from the vertical, m")
-    tr.add_argument("--v0", required=True, metavar="V", help="initial speed perpendicular to R0, m/s")
-    tr.add_argument("--omega2", metavar="G_OVER_L", help="Ω² = g/l, 1/s²")
-    tr.add_argument("--l", metavar="L")
-    tr.add_argument("--g", metavar="G")
-    drag = tr.add_mutually_exclusive_group()
-    drag.add_argument("--kappa", metavar="K", help="linear drag, 1/s (R = 2κmv)")
-    drag.add_argument("--beta", metavar="B", help="quadratic drag, 1/m (R = mβv²)")
-    tr.add_argument("--t", metavar="T1,T2,...")
-    tr.add_argument("--t0", metavar="A")
-    tr.add_argument("--t1", metavar="B")
-    tr.add_argument("--n", type=_positive_int("--n", 10**7), metavar="N")
-    tr.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None)
-    fmt = tr.add_mutually_exclusive_group()
-    fmt.add_argument("--json", action="store_true")
-    fmt.add_argument("--csv", action="store_true")
+    _add_period(sub)
+    _add_trajectory(sub)
 
     fg = _command(sub, "figures", "reproduce the texts' missing figures (CSV data and PNG plots)",
                   "Writes figs. 7a, 7b, 8 (and the overdamped case) and 32 as CSV data and PNG plots, and the\n"
@@ -181,11 +152,7 @@ def build_parser() -> argparse.ArgumentParser:
                   "quasicentral figures\nquasicentral figures --out build/figures")
     fg.add_argument("--out", default="figures", metavar="DIR", help="output directory, created if needed (default figures)")
 
-    ch = sub.add_parser("charts", help="work–precision charts, stability maps, validity of the approximations")
-    ch.add_argument("--out", default="charts", metavar="DIR", help="output directory (default charts)")
-    ch.add_argument("--quick", action="store_true", help="a fast, coarse run (CI, tests)")
-    ch.add_argument("--only", action="append", metavar="NAME", help="only this chart (repeatable)")
-    ch.add_argument("--render-only", action="store_true", help="redraw the PNGs from the CSVs in DIR, measure nothing")
+    _add_charts(sub)
 
     rp = _command(sub, "report", "LaTeX reports (or handouts) regenerated from the verified derivations",
                   "Per text, the derivation report (printed vs re-derived, verdicts, steps, errata, cleared\n"
@@ -212,10 +179,7 @@ def build_parser() -> argparse.ArgumentParser:
     nt.add_argument("dir", metavar="DIR", help="the new text's folder (must not exist, or be empty)")
     nt.add_argument("--id", dest="text_id", metavar="ID", help="the text's id (default: the folder's name)")
 
-    sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
-    sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
-    sc.add_argument("--json", action="store_true")
-    sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
+    _add_scene(sub)
 
     c = _command(sub, "catalog", "list the catalog: ids, dimensions, LaTeX-parser coverage",
                  "Lists every entry with its id (for verify --id), section and dimensions, and which of sympy's\n"
@@ -261,6 +225,66 @@ class _QuietPipe:
 
     def __getattr__(self, name):
         return getattr(self._stream, name)
+
+
+def _add_period(sub) -> None:
+    from quasicentral.models.period import METHODS as PERIOD_METHODS, SERIES_MAX_TERMS
+
+    pe = sub.add_parser("period", help="the exact period of the simple pendulum, T and T/T0")
+    amp = pe.add_mutually_exclusive_group()
+    amp.add_argument("--amplitude-deg", metavar="A", help="amplitude φ0 in degrees, 0 < A < 180 (read exactly)")
+    amp.add_argument("--amplitude-rad", metavar="A", help="amplitude φ0 in radians, 0 < A < π (read exactly)")
+    amp.add_argument("--complement-rad", metavar="D", help="δ = π − φ0 (full accuracy near π)")
+    pe.add_argument("--l", metavar="L", default=None, help="length in m (default 1)")
+    pe.add_argument("--g", metavar="G", default=None, help=f"gravity in m/s² (default {G_STANDARD})")
+    pe.add_argument("--method", choices=PERIOD_METHODS, default=None,
+                    help=f"route to T/T0: {', '.join(PERIOD_METHODS)} (default ellipk)")
+    pe.add_argument("--terms", type=_positive_int("--terms", SERIES_MAX_TERMS), default=None,
+                    help="terms of the series (66), with --method series (default 4)")
+    pe.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
+                    help="decimal digits (inputs read exactly; agm and ellipk results correctly rounded)")
+    pe.add_argument("--table", action="store_true", help="T/T0 from 5° to 179.99° at 20 digits, two methods")
+    pe.add_argument("--json", action="store_true", help="print JSON (with 'digits' and 'warning' when they apply)")
+
+
+def _add_trajectory(sub) -> None:
+    from quasicentral.models.registry import TRAJECTORY, names
+
+    tr = sub.add_parser("trajectory", help="the motion of a small-swing spherical pendulum x(t), y(t)")
+    tr.add_argument("--model", required=True, metavar="MODEL", choices=[m.value for m in TRAJECTORY],
+                    help=f"one of {names(TRAJECTORY)}")
+    tr.add_argument("--R0", required=True, metavar="X", help="initial distance from the vertical, m")
+    tr.add_argument("--v0", required=True, metavar="V", help="initial speed perpendicular to R0, m/s")
+    tr.add_argument("--omega2", metavar="G_OVER_L", help="Ω² = g/l, 1/s²")
+    tr.add_argument("--l", metavar="L", help="length, m (with --g; then R0 must be below it)")
+    tr.add_argument("--g", metavar="G", help="gravity, m/s² (with --l)")
+    drag = tr.add_mutually_exclusive_group()
+    drag.add_argument("--kappa", metavar="K", help="linear drag, 1/s (R = 2κmv)")
+    drag.add_argument("--beta", metavar="B", help="quadratic drag, 1/m (R = mβv²)")
+    tr.add_argument("--t", metavar="T1,T2,...", help="times, s (comma-separated, ≥ 0)")
+    tr.add_argument("--t0", metavar="A", help="first time, s (with --t1 and --n)")
+    tr.add_argument("--t1", metavar="B", help="last time, s")
+    tr.add_argument("--n", type=_positive_int("--n", MAX_POINTS), metavar="N", help="number of times from --t0 to --t1")
+    tr.add_argument("--dps", type=_positive_int("--dps", MAX_DPS), default=None,
+                    help="decimal digits (mpmath; inputs read exactly); default double precision")
+    fmt = tr.add_mutually_exclusive_group()
+    fmt.add_argument("--json", action="store_true", help="print JSON (with 'warning' when it applies)")
+    fmt.add_argument("--csv", action="store_true", help="print CSV t,x,y")
+
+
+def _add_scene(sub) -> None:
+    sc = sub.add_parser("scene", help="a situation and the accuracy it needs: the cheapest model that meets it")
+    sc.add_argument("file", metavar="FILE", help="a scene (TOML; examples in scenes/)")
+    sc.add_argument("--json", action="store_true", help="print the decision as JSON")
+    sc.add_argument("--plot", metavar="OUT.png", help="also plot the answer and the evidence")
+
+
+def _add_charts(sub) -> None:
+    ch = sub.add_parser("charts", help="work–precision charts, stability maps, validity of the approximations")
+    ch.add_argument("--out", default="charts", metavar="DIR", help="output directory (default charts)")
+    ch.add_argument("--quick", action="store_true", help="a fast, coarse run (CI, tests)")
+    ch.add_argument("--only", action="append", metavar="NAME", help="only this chart (repeatable)")
+    ch.add_argument("--render-only", action="store_true", help="redraw the PNGs from the CSVs in DIR, measure nothing")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -518,64 +542,85 @@ def _out_dir(args) -> Path:
     return Path(args.out)
 
 
-def _period(args) -> int:
+def _warn(message: str) -> None:
+    print(f"quasicentral: warning: {message}", file=sys.stderr)
+
+
+def _period_refuse_ignored(args) -> None:
+    """Options that would be silently ignored are refused, naming the option."""
+    if args.table:
+        for flag, value in (("--amplitude-deg", args.amplitude_deg), ("--amplitude-rad", args.amplitude_rad),
+                            ("--complement-rad", args.complement_rad), ("--dps", args.dps),
+                            ("--method", args.method), ("--terms", args.terms), ("--l", args.l), ("--g", args.g)):
+            if value is not None:
+                raise UsageError(f"{flag} has no effect with --table (T/T0 from 5° to 179.99° at 20 digits)")
+    elif args.terms is not None and args.method != "series":
+        raise UsageError(f"--terms applies to --method series only, not {args.method or 'ellipk'}")
+
+
+def _period_table(args) -> int:
     from quasicentral.models import period as P
 
-    if args.table:
-        rows = P.table()
-        if args.json:
-            print(json.dumps({"table": rows}, indent=2))
-        else:
-            print("amplitude   T/T0 (AGM, correctly rounded)   quadrature agrees")
-            for r in rows:
-                print(f"{r['amplitude_deg']:>9}°  {r['T_over_T0']:<30}  {'yes' if r['agree'] else 'NO'}")
-        return EXIT_OK if all(r["agree"] for r in rows) else EXIT_UNEXPECTED
-    given = {"phi0": args.amplitude_rad, "amplitude_deg": args.amplitude_deg, "delta": args.complement_rad}
-    if all(v is None for v in given.values()):
-        raise UsageError("give --amplitude-deg, --amplitude-rad or --complement-rad")
-    length, grav = finite_float(args.l, "--l"), finite_float(args.g, "--g")
-    if length <= 0:
-        raise UsageError(f"--l must be a positive length, not {args.l}")
-    if grav <= 0:
-        raise UsageError(f"--g must be positive, not {args.g}")
-    try:
-        out = {"method": args.method}
-        if args.dps:
-            import mpmath
+    rows = P.table()
+    if args.json:
+        print(json.dumps({"table": rows}, indent=2))
+    else:
+        print("amplitude   T/T0 (AGM, correctly rounded)   quadrature agrees")
+        for r in rows:
+            print(f"{r['amplitude_deg']:>9}°  {r['T_over_T0']:<30}  {'yes' if r['agree'] else 'NO'}")
+    return EXIT_OK if all(r["agree"] for r in rows) else EXIT_UNEXPECTED
 
-            kw = {k: v for k, v in given.items() if v is not None}
-            if args.method in ("agm", "ellipk"):
-                ratio_text = P.period_ratio_rounded(digits=args.dps, method=args.method, **kw)
-            else:
-                ratio_text = mpmath.nstr(P.period_ratio_mp(dps=args.dps, method=args.method, terms=args.terms, **kw),
-                                         args.dps, strip_zeros=False)
-            with mpmath.workdps(args.dps + 10):
-                t0 = 2 * mpmath.pi * mpmath.sqrt(mpmath.mpf(args.l) / mpmath.mpf(args.g))
-                out["T"] = mpmath.nstr(t0 * mpmath.mpf(ratio_text), args.dps, strip_zeros=False)
-            out["T_over_T0"] = ratio_text
-            out["T0"] = mpmath.nstr(t0, args.dps, strip_zeros=False)
-            out["digits"] = args.dps
+
+def _period_input(args) -> dict:
+    """The amplitude or its complement as an exact decimal string, keyed as period.* takes it."""
+    from quasicentral.notation import numbers
+
+    given = {"phi0": ("--amplitude-rad", args.amplitude_rad), "amplitude_deg": ("--amplitude-deg", args.amplitude_deg),
+             "delta": ("--complement-rad", args.complement_rad)}
+    given = {k: (flag, v) for k, (flag, v) in given.items() if v is not None}
+    if not given:
+        raise UsageError("give --amplitude-deg, --amplitude-rad or --complement-rad")
+    (key, (flag, text)), = given.items()
+    try:
+        return {key: str(numbers.decimal(text, flag))}, flag
+    except numbers.NumberError as exc:
+        raise UsageError(str(exc)) from None
+
+
+def _period(args) -> int:
+    from quasicentral.models import period as P
+    from quasicentral.notation import numbers
+
+    _period_refuse_ignored(args)
+    if args.table:
+        return _period_table(args)
+    kw, flag = _period_input(args)
+    method = args.method or "ellipk"
+    terms = args.terms or 4
+    l_text, g_text = args.l or "1", args.g or str(G_STANDARD)
+    length, grav = finite_float(l_text, "--l"), finite_float(g_text, "--g")
+    if length <= 0:
+        raise UsageError(f"--l must be a positive length, not {l_text}")
+    if grav <= 0:
+        raise UsageError(f"--g must be positive, not {g_text}")
+    try:
+        out = {"method": method}
+        if args.dps:
+            out.update(_period_digits(P, kw, method, terms, args.dps, l_text, g_text))
         else:
-            val = {k: finite_float(v, "--" + k.replace("phi0", "amplitude-rad").replace("_", "-")) for k, v in given.items() if v is not None}
-            if "amplitude_deg" in val:
-                val = {"phi0": math.radians(val.pop("amplitude_deg"))}
-            ratio = float(P.period_ratio(val.get("phi0"), delta=val.get("delta"), method=args.method, terms=args.terms))
+            ratio = float(P.period_ratio(**kw, method=method, terms=terms))
             t0 = 2 * math.pi * math.sqrt(length / grav)
             out.update({"T": t0 * ratio, "T_over_T0": ratio, "T0": t0})
-        if args.method == "series":
-            import numpy as np
-
-            c = P._complement_sine(phi0=math.radians(float(args.amplitude_deg)) if args.amplitude_deg else
-                                   (float(args.amplitude_rad) if args.amplitude_rad else None),
-                                   delta=float(args.complement_rad) if args.complement_rad else None)
-            _, tail = P.series_ratio(np.array([1 - float(c) ** 2]), args.terms)
-            out["terms"] = args.terms
-            out["error_estimate"] = float(tail[0])
+        if method == "series":
+            _series_warning(P, kw, terms, out, args.dps or 16)
     except P.DomainError as exc:
+        raise UsageError(f"{flag}: {exc}") from None
+    except numbers.NumberError as exc:
         raise UsageError(str(exc)) from None
-    if not all(math.isfinite(float(v)) for k, v in out.items() if k in ("T", "T_over_T0", "error_estimate")):
-        raise UsageError("the result is not finite for these inputs (e.g. a series truncation at an amplitude "
-                         "where its error bound diverges)")
+    if not all(math.isfinite(float(v)) for k, v in out.items() if k in ("T", "T_over_T0")):
+        raise UsageError(f"the result is not finite for {flag} {next(iter(kw.values()))}")
+    if "warning" in out:
+        _warn(out["warning"])
     if args.json:
         print(json.dumps(out, indent=2, allow_nan=False))
     else:
@@ -584,13 +629,63 @@ def _period(args) -> int:
     return EXIT_OK
 
 
+#: the most digits the slow routes are allowed (seconds at these limits); the ODE at any
+#: precision also integrates at most ODE_MAX_QUARTER time units 1/Ω (a quarter period K(m))
+PERIOD_MAX_DPS = {"ode": 40, "quad": 300}
+ODE_MAX_QUARTER = 25.0
+
+
+def _period_digits(P, kw, method, terms, dps, l_text, g_text) -> dict:
+    import mpmath
+
+    if dps > PERIOD_MAX_DPS.get(method, MAX_DPS):
+        raise UsageError(f"--dps: --method {method} takes at most {PERIOD_MAX_DPS[method]} digits (it would run for "
+                         "minutes); agm and ellipk take up to " + str(MAX_DPS))
+    if method == "ode":
+        quarter = float(P.period_ratio(**kw)) * math.pi / 2
+        if quarter > ODE_MAX_QUARTER:
+            raise UsageError(f"--method ode with --dps integrates a quarter period of {quarter:.3g} time units 1/Ω "
+                             f"here (more than {ODE_MAX_QUARTER:g}: minutes); use --method agm or ellipk")
+
+    if method in ("agm", "ellipk"):
+        ratio_text = P.period_ratio_rounded(digits=dps, method=method, **kw)
+    else:
+        ratio_text = mpmath.nstr(P.period_ratio_mp(dps=dps, method=method, terms=terms, **kw), dps, strip_zeros=False)
+    with mpmath.workdps(dps + 10):
+        t0 = 2 * mpmath.pi * mpmath.sqrt(mpmath.mpf(l_text) / mpmath.mpf(g_text))
+        return {"T": mpmath.nstr(t0 * mpmath.mpf(ratio_text), dps, strip_zeros=False), "T_over_T0": ratio_text,
+                "T0": mpmath.nstr(t0, dps, strip_zeros=False), "digits": dps}
+
+
+def _series_warning(P, kw, terms, out, printed_digits) -> None:
+    """The series' error estimate, and how many digits hold when fewer than are printed."""
+    value, tail = (float(a) for a in P.series_error(**kw, terms=terms))
+    out["terms"] = terms
+    out["error_estimate"] = tail if math.isfinite(tail) else None
+    rel = tail / value if math.isfinite(tail) else math.inf
+    if rel >= 0.1:
+        bound = f"{tail:.2g}" if math.isfinite(tail) else "unbounded"
+        raise UsageError(f"--terms: the series (66) truncated after {terms} terms holds no digit here (error "
+                         f"estimate {bound} for T/T0 ≈ {value:.3g}); use more terms or --method ellipk")
+    held = max(0, int(math.floor(-math.log10(rel)))) if rel > 0 else printed_digits
+    if held < printed_digits:
+        out["digits"] = held
+        bound = f"{tail:.2g}" if math.isfinite(tail) else "unbounded"
+        out["warning"] = (f"the series (66) truncated after {terms} terms holds about {held} significant digits "
+                          f"here (error estimate {bound}); use more --terms or --method ellipk")
+
+
+MAX_POINTS = 10**6  # --n, and the number of --t values
+MAX_POINTS_DPS = 10**4  # the same with --dps (mpmath evaluates point by point)
+
+
 def _trajectory(args) -> int:
     import mpmath
 
     from quasicentral.models import motion
 
     if args.model not in motion.MODELS:
-        raise UsageError(f"unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
+        raise UsageError(f"--model: unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
     if args.dps:
         # numbers are read, and the times spaced, at the asked precision plus guard digits
         with mpmath.workdps(args.dps + 20):
@@ -598,40 +693,74 @@ def _trajectory(args) -> int:
     return _trajectory_run(args, motion, mpmath)
 
 
-def _trajectory_run(args, motion, mpmath) -> int:
-    num = (lambda text, name: _exact_number(text, name)) if args.dps else (lambda text, name: finite_float(text, name))
-    R0, v0 = num(args.R0, "--R0"), num(args.v0, "--v0")
-    if args.omega2 is not None:
-        if args.l is not None or args.g is not None:
-            raise UsageError("give --omega2 or --l and --g, not both")
-        omega2 = num(args.omega2, "--omega2")
-    elif args.l is not None and args.g is not None:
-        length, grav = num(args.l, "--l"), num(args.g, "--g")
-        if length <= 0:
-            raise UsageError(f"--l must be a positive length, not {args.l}")
-        if grav <= 0:
-            raise UsageError(f"--g must be positive, not {args.g}")
-        omega2 = grav / length
-    else:
-        raise UsageError("give --omega2, or --l and --g")
+def _trajectory_drag(args, num):
+    """(kappa, beta) for the model: --kappa is required by the linear model, --beta by the
+    quadratic ones; the other one is refused."""
     quadratic = args.model.startswith("quadratic")
     if args.beta is not None and not quadratic:
-        raise UsageError(f"model {args.model} takes --kappa, not --beta")
+        raise UsageError(f"--beta: model {args.model} takes --kappa, not --beta")
     if args.kappa is not None and quadratic:
-        raise UsageError(f"model {args.model} takes --beta, not --kappa")
+        raise UsageError(f"--kappa: model {args.model} takes --beta, not --kappa")
     if quadratic and args.beta is None:
-        raise UsageError(f"model {args.model} needs --beta (quadratic drag, 1/m)")
+        raise UsageError(f"--beta is required by model {args.model} (quadratic drag, 1/m)")
+    if args.model == "linear" and args.kappa is None:
+        raise UsageError("--kappa is required by model linear (linear drag, 1/s; --kappa 0 for none)")
     kappa = num(args.kappa, "--kappa") if args.kappa is not None else 0
     beta = num(args.beta, "--beta") if args.beta is not None else 0
     if args.model == "ellipse" and args.kappa is not None and kappa != 0:
-        raise UsageError("model ellipse has no drag: leave out --kappa")
+        raise UsageError("--kappa: model ellipse has no drag; leave out --kappa")
+    return kappa, beta
+
+
+def _trajectory_pendulum(args, num):
+    """(Ω², l, g): from --omega2, or from --l and --g (then R0 must stay below l)."""
+    if args.omega2 is not None:
+        if args.l is not None or args.g is not None:
+            raise UsageError("--omega2: give --omega2 or --l and --g, not both")
+        return num(args.omega2, "--omega2"), None, None
+    if args.l is None or args.g is None:
+        raise UsageError("give --omega2, or --l and --g")
+    length, grav = num(args.l, "--l"), num(args.g, "--g")
+    if length <= 0:
+        raise UsageError(f"--l must be a positive length, not {args.l}")
+    if grav <= 0:
+        raise UsageError(f"--g must be positive, not {args.g}")
+    return grav / length, length, grav
+
+
+def _trajectory_run(args, motion, mpmath) -> int:
+    num = (lambda text, name: _exact_number(text, name)) if args.dps else (lambda text, name: finite_float(text, name))
+    R0, v0 = num(args.R0, "--R0"), num(args.v0, "--v0")
+    omega2, length, grav = _trajectory_pendulum(args, num)
+    kappa, beta = _trajectory_drag(args, num)
     times = _times(args, num)
+    import numpy as np
+
     try:
-        x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, beta, dps=args.dps)
-    except (motion.ParameterError, ValueError) as exc:
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # a failure is reported below, in one line
+            x, y = motion.trajectory(args.model, times, R0, v0, omega2, kappa, beta, dps=args.dps, length=length,
+                                     g=grav)
+    except motion.ParameterError as exc:
+        raise UsageError(_name_option(str(exc), exc.name)) from None
+    except (ValueError, ArithmeticError) as exc:
         raise UsageError(str(exc)) from None
     if not all(mpmath.isfinite(v) for v in list(times) + list(x) + list(y)):
         raise UsageError("the result is not finite for these inputs (a time or a value overflows)")
+    warning = None
+    if args.model == "quadratic-first-order":
+        warning = motion.first_order_warning(motion.Swing(R0, v0, omega2, 0, beta), float(max(times)))
+    return _trajectory_print(args, times, x, y, warning, mpmath)
+
+
+def _name_option(message: str, name: str | None) -> str:
+    """'R0 must be …' → '--R0 must be …'; other messages get the option as a prefix."""
+    if name not in ("R0", "v0", "omega2", "kappa", "beta", "t", "l", "g"):
+        return message
+    return "--" + message if message.startswith(name + " ") else f"--{name}: {message}"
+
+
+def _trajectory_print(args, times, x, y, warning, mpmath) -> int:
     if args.dps:
         fmt = lambda a: mpmath.nstr(a, args.dps, strip_zeros=False)  # noqa: E731
     else:
@@ -642,6 +771,9 @@ def _trajectory_run(args, motion, mpmath) -> int:
            "t": [fmt(a) for a in times], "x": [fmt(a) for a in x], "y": [fmt(a) for a in y]}
     if args.dps:
         doc["digits"] = args.dps
+    if warning:
+        doc["warning"] = warning
+        _warn(warning)
     if args.csv:
         print("t,x,y")
         for a, b, c in zip(doc["t"], doc["x"], doc["y"]):
@@ -656,15 +788,13 @@ def _trajectory_run(args, motion, mpmath) -> int:
 
 
 def _exact_number(text: str, name: str):
-    import mpmath
+    """An mpmath number from a decimal string, at the working precision."""
+    from quasicentral.notation import numbers
 
     try:
-        val = mpmath.mpf(text.strip())
-    except (ValueError, TypeError, AttributeError):
-        raise UsageError(f"{name} must be a number, not {text!r}") from None
-    if not mpmath.isfinite(val):
-        raise UsageError(f"{name} must be finite, not {text!r}")
-    return val
+        return numbers.to_mpf(text, name)
+    except numbers.NumberError as exc:
+        raise UsageError(str(exc)) from None
 
 
 def _times(args, num):
@@ -674,12 +804,17 @@ def _times(args, num):
         parts = [p for p in args.t.split(",") if p.strip()]
         if not parts:
             raise UsageError("--t is an empty list of times")
+        limit = MAX_POINTS_DPS if args.dps else MAX_POINTS
+        if len(parts) > limit:
+            raise UsageError(f"--t has {len(parts)} times; at most {limit}{' with --dps' if args.dps else ''}")
         times = [num(p, "--t") for p in parts]
     elif None not in (args.t0, args.t1, args.n):
         a, b = num(args.t0, "--t0"), num(args.t1, "--t1")
         if b < a:
             raise UsageError("--t1 must not be before --t0")
         n = args.n
+        if args.dps and n > MAX_POINTS_DPS:
+            raise UsageError(f"--n must be at most {MAX_POINTS_DPS} with --dps (each point is evaluated in mpmath)")
         times = [a + (b - a) * i / (n - 1) for i in range(n)] if n > 1 else [a]
     else:
         raise UsageError("give the times: --t T1,T2,... or --t0 A --t1 B --n N")
@@ -817,14 +952,14 @@ _COMMANDS = {"new-text": _new_text, "charts": _charts, "scene": _scene, "report"
 
 
 def finite_float(text: str, name: str) -> float:
-    """Parse a finite float for the CLI (NaN and infinities are bad input)."""
+    """A finite double from a decimal string (:mod:`quasicentral.notation.numbers`); bad input
+    is a UsageError naming the option."""
+    from quasicentral.notation import numbers
+
     try:
-        val = float(text)
-    except ValueError:
-        raise UsageError(f"{name} must be a number, not {text!r}") from None
-    if not math.isfinite(val):
-        raise UsageError(f"{name} must be finite, not {text!r}")
-    return val
+        return numbers.to_float(text, name)
+    except numbers.NumberError as exc:
+        raise UsageError(str(exc)) from None
 
 
 if __name__ == "__main__":

@@ -185,3 +185,32 @@ def test_cli_bad_usage_in_process(args, capsys):
 def test_quick_build_of_every_chart(tmp_path):
     paths = C.build(tmp_path, quick=True)
     assert len(paths) == 2 * len(C.CHARTS)
+
+
+# --- issue 16: --render-only on bad data is one line naming the file (and line), exit 2 -----------------
+@pytest.mark.parametrize("content,words", [
+    (b"# chart: stability-long-times\nmap,x,method,role,error\nlong-times,abc,m,default,1e-3\n", "a.csv:3: x"),
+    (b"# chart: stability-long-times\nmap,x,method,role,error\n", "a.csv: no data rows"),
+    (bytes(range(256)) * 8, "a.csv: not UTF-8"),
+    (b"# chart: pie\nx\n1\n", "a.csv: unknown chart kind"),
+    (b"# chart: workprecision-period\ncase,method,family,seconds\nc,m,f,1\n", "missing column"),
+    (b"# chart: validity\nmodel,against,drag_law,amplitude,drag,periods,error\nm,a,kappa,0.1,inf,1,0.1\n",
+     "a.csv:3: drag must be finite"),
+    (b"# chart: workprecision-period\ncase,method,family,seconds,error\nc,m,f\n", "a.csv:3: the row is too short"),
+])
+def test_render_only_refuses_bad_data(tmp_path, content, words):
+    (tmp_path / "a.csv").write_bytes(content)
+    proc = subprocess.run([sys.executable, "-m", "quasicentral.cli", "charts", "--render-only", "--out", str(tmp_path)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr.count("\n") == 1 and proc.stderr.startswith("quasicentral: error:") and words in proc.stderr, \
+        proc.stderr
+    assert not (tmp_path / "a.png").exists()
+
+
+def test_chart_specs_are_typed_and_the_csv_header_unchanged():
+    spec = C.STABILITY["period-near-pi"]
+    assert spec.log_x is True and spec.invert_x is True
+    assert spec.header() == {"title": spec.title, "xlabel": spec.xlabel, "ylabel": spec.ylabel, "xscale": "log",
+                             "invert_x": "yes"}
+    assert C.CHARTS[0] == "workprecision-period" and C.CHARTS[-1] == "validity" and len(C.CHARTS) == 13

@@ -110,10 +110,93 @@ def test_cli_trajectory_contract(capsys):
     ["--model", "nosuch"], ["--t", "-1"], ["--beta", "0.1"],
 ])
 def test_cli_trajectory_bad_input(args, capsys):
-    base = {"--model": "linear", "--R0": "0.1", "--v0": "0.1", "--omega2": "10", "--t": "0,1"}
+    base = {"--model": "linear", "--R0": "0.1", "--v0": "0.1", "--omega2": "10", "--kappa": "0", "--t": "0,1"}
     opts = dict(base)
     opts.update(dict(zip(args[::2], args[1::2])))
     argv = ["trajectory"] + [a for kv in opts.items() for a in kv]
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and err.startswith("quasicentral: error:")
+
+
+# --- issue 16: each reproduction, replayed --------------------------------------------------------------
+def _run(args, capsys):
+    code = main(["trajectory", *args])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_cli_linear_without_drag_compensates_the_phase(capsys):
+    """κ = 0 at Ω² ≈ 36, t = 7.5: within 3 ulp of the amplitude scale, as every κ > 0 (Ω² is
+    taken exactly; the rounding of Ω = √(Ω²) never enters the phase)."""
+    rng = np.random.default_rng(16)
+    for om2 in rng.uniform(35.0, 37.0, 25):
+        for kappa in ("0", "0.4"):
+            code, out, _ = _run(["--model", "linear", "--R0", "0.1", "--v0", "0.1", "--omega2", repr(float(om2)),
+                                 "--kappa", kappa, "--t", "7.5", "--json"], capsys)
+            doc = json.loads(out)
+            with mpmath.workdps(40):
+                x, y = motion.linear([mpmath.mpf(7.5)], mpmath.mpf(0.1), mpmath.mpf(0.1),
+                                     mpmath.sqrt(mpmath.mpf(float(om2))), mpmath.mpf(kappa), ops=motion.MP)
+            assert abs(doc["x"][0] - float(x[0])) <= 3 * np.spacing(0.1)
+            assert abs(doc["y"][0] - float(y[0])) <= 3 * np.spacing(0.1 / 6)
+
+
+def test_cli_enormous_drag_is_finite_and_quiet(capsys):
+    code, out, err = _run(["--model", "linear", "--R0", "0.1", "--v0", "0.1", "--omega2", "10", "--kappa", "1e300",
+                           "--t", "0,1,2", "--json"], capsys)
+    doc = json.loads(out)
+    assert code == 0 and err == ""
+    assert doc["x"] == [0.1, 0.1, 0.1] and doc["y"][0] == 0.0 and 0 < doc["y"][2] <= 0.1 / 2e300
+    x, y = motion.linear(np.array([1.0]), 0.1, 0.1, math.sqrt(10), 1e149)
+    assert x[0] == 0.1 and abs(y[0] - 0.1 / 2e149) <= 1e-15 * 0.1 / 2e149
+
+
+def test_cli_first_order_out_of_range_warns(capsys):
+    args = ["--model", "quadratic-first-order", "--beta", "20", "--R0", "0.1", "--v0", "0", "--l", "1", "--g", "9.81",
+            "--t", "5", "--json"]
+    code, out, err = _run(args, capsys)
+    assert code == 0 and "out of its range" in json.loads(out)["warning"]
+    assert err.startswith("quasicentral: warning:") and err.count("\n") == 1
+    code, out, err = _run(args[:3] + ["0.01"] + args[4:], capsys)  # β = 0.01: βR0·Ωt small
+    assert code == 0 and "warning" not in json.loads(out) and err == ""
+    code, out, err = _run(args[:3] + ["1e300"] + args[4:], capsys)  # far out: warned, never an internal error
+    assert code == 0 and "out of its range" in json.loads(out)["warning"]
+    code, out, err = _run(["--model", "quadratic", "--beta", "1e300"] + args[4:], capsys)  # stiff: one line
+    assert code == 2 and err.count("\n") == 1 and "internal" not in err
+
+
+@pytest.mark.parametrize("args,named", [
+    (["--model", "linear", "--R0", "5", "--v0", "0", "--l", "1", "--g", "9.81", "--kappa", "0"], "--R0"),
+    (["--model", "linear", "--R0", "0.1", "--v0", "0", "--omega2", "10"], "--kappa"),
+    (["--model", "quadratic", "--R0", "0.1", "--v0", "0", "--omega2", "10"], "--beta"),
+    (["--model", "ellipse", "--R0", "0.1", "--v0", "0", "--omega2", "10", "--kappa", "0.3"], "--kappa"),
+    (["--model", "linear", "--R0", "1_0", "--v0", "0", "--omega2", "10", "--kappa", "0"], "--R0"),
+    (["--model", "linear", "--R0", "0.1", "--v0", "0", "--omega2", "10", "--kappa", "nan"], "--kappa"),
+    (["--model", "linear", "--R0", "0.1", "--v0", "0", "--omega2", "1e999", "--kappa", "0"], "--omega2"),
+    (["--model", "linear", "--R0", "0.1", "--v0", "0", "--omega2", "10", "--kappa", "0", "--dps", "30",
+      "--t0", "0", "--t1", "1", "--n", "100000"], "--n"),
+    (["--model", "linear", "--R0", "0.1", "--v0", "0", "--omega2", "10", "--kappa", "0", "--t0", "0", "--t1", "1",
+      "--n", "100000000"], "--n"),
+    (["--model", "linear", "--R0", "0.1", "--v0", "5", "--l", "1", "--g", "9.81", "--kappa", "0"], "--v0"),
+])
+def test_cli_trajectory_refusals_name_the_option(args, named, capsys):
+    code, out, err = _run(args + ([] if "--t0" in args else ["--t", "1"]), capsys)
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and err.startswith("quasicentral: error:") and named in err, err
+
+
+def test_models_import_only_downward():
+    """The model layer imports nothing above it (engine, studies, documents, cli)."""
+    import ast
+    from pathlib import Path
+
+    import quasicentral.models as pkg
+
+    for path in Path(pkg.__file__).parent.glob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
+                [node.module or ""] if isinstance(node, ast.ImportFrom) else []
+            for name in names:
+                assert not name.startswith(("quasicentral.engine", "quasicentral.studies", "quasicentral.documents",
+                                            "quasicentral.cli")), f"{path.name} imports {name}"

@@ -119,3 +119,108 @@ def test_table_two_methods_agree():
     assert all(r["agree"] for r in rows)
     pinned = {r["amplitude_deg"]: r["T_over_T0"] for r in rows}
     assert pinned["90"] == PINNED[90] and pinned["179"] == PINNED[179]
+
+
+# --- issue 16: each reproduction, replayed --------------------------------------------------------------
+TRUTH_DELTA_1 = 1.3969137910128526  # T/T0 at δ = 1 rad (mpmath, 30 digits: 1.39691379101285258…)
+TRUTH_DELTA_TINY = 441.0851729285726  # T/T0 at δ = 1e-300
+
+
+def _period_json(capsys, *args):
+    assert main(["period", *args, "--json"]) == 0
+    out = capsys.readouterr()
+    return json.loads(out.out), out.err
+
+
+@pytest.mark.parametrize("args,truth,rel", [
+    (["--complement-rad", "1", "--method", "ode"], TRUTH_DELTA_1, 1e-11),
+    (["--complement-rad", "1e-300", "--method", "ode"], TRUTH_DELTA_TINY, 1e-11),
+    (["--complement-rad", "1e-300", "--method", "quad"], TRUTH_DELTA_TINY, 1e-13),
+    (["--complement-rad", "1e-300", "--method", "agm"], TRUTH_DELTA_TINY, 1e-15),
+    (["--amplitude-deg", "1e-12", "--method", "ode"], 1.0, 1e-13),
+    (["--amplitude-deg", "1e-12", "--method", "quad"], 1.0, 1e-15),
+])
+def test_cli_period_methods_at_the_edges(capsys, args, truth, rel):
+    doc, err = _period_json(capsys, *args)
+    assert abs(doc["T_over_T0"] - truth) <= rel * truth and err == ""
+    with mpmath.workdps(30):
+        assert abs(P.period_ratio_mp(delta="1", dps=25) - mpmath.mpf(TRUTH_DELTA_1)) < 1e-15
+
+
+def test_cli_period_quad_at_any_precision_near_pi(capsys):
+    doc, _ = _period_json(capsys, "--complement-rad", "1e-300", "--method", "quad", "--dps", "40")
+    assert doc["T_over_T0"].startswith("441.08517292857255408405119523626")
+
+
+def test_cli_amplitude_near_180_is_read_exactly(capsys):
+    """δ = 180° − A is formed from the decimal string: T agrees with 50 digits at the exact A."""
+    doc, _ = _period_json(capsys, "--amplitude-deg", "179.9999999999")
+    with mpmath.workdps(50):
+        delta = (180 - mpmath.mpf("179.9999999999")) * mpmath.pi / 180  # exact: 1e-10 degrees
+        truth = 4 * mpmath.sqrt(1 / mpmath.mpf("9.81")) * mpmath.ellipk(1 - mpmath.sin(delta / 2) ** 2)
+    assert abs(doc["T"] - float(truth)) <= 4e-16 * float(truth)
+    assert str(truth).startswith("37.232009630")
+
+
+def test_cli_series_says_how_many_digits_hold_or_refuses(capsys):
+    doc, err = _period_json(capsys, "--amplitude-deg", "60", "--method", "series", "--terms", "4")
+    assert doc["digits"] == 3 and "3 significant digits" in doc["warning"]
+    assert err.startswith("quasicentral: warning:") and err.count("\n") == 1
+    doc, err = _period_json(capsys, "--amplitude-deg", "10", "--method", "series", "--terms", "40")
+    assert "warning" not in doc and err == ""
+    assert main(["period", "--amplitude-deg", "179.999", "--method", "series"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--terms" in err and "no digit" in err
+
+
+@pytest.mark.parametrize("args,named", [
+    (["--amplitude-deg", "10", "--terms", "5"], "--terms"),
+    (["--amplitude-deg", "10", "--method", "agm", "--terms", "5"], "--terms"),
+    (["--table", "--amplitude-deg", "10"], "--amplitude-deg"),
+    (["--table", "--dps", "30"], "--dps"),
+    (["--table", "--method", "agm"], "--method"),
+    (["--table", "--l", "2"], "--l"),
+    (["--complement-rad", "nan"], "--complement-rad"),
+    (["--complement-rad", "inf"], "--complement-rad"),
+    (["--amplitude-rad", "4"], "--amplitude-rad"),
+    (["--amplitude-deg", "1_0"], "--amplitude-deg"),
+    (["--amplitude-deg", "١٠"], "--amplitude-deg"),
+    (["--amplitude-deg", "1" * 2000], "--amplitude-deg"),
+    (["--amplitude-deg", "10", "--g", "1e999"], "--g"),
+    (["--amplitude-deg", "10", "--dps", "100000"], "--dps"),
+    (["--amplitude-deg", "10", "--method", "series", "--terms", "10000001"], "--terms"),
+    (["--amplitude-deg", "60", "--method", "ode", "--dps", "41"], "--dps"),
+    (["--complement-rad", "1e-300", "--method", "ode", "--dps", "20"], "--method ode"),
+])
+def test_cli_period_refusals_name_the_option(capsys, args, named):
+    assert main(["period", *args]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("quasicentral: error:") and named in err, err
+
+
+def _series_mp(m, n):
+    """Σ_{k<n} c_k m^k with c_k = (C(2k, k)/4^k)² exact (an independent route to the coefficients)."""
+    from fractions import Fraction
+
+    total = mpmath.mpf(0)
+    for k in range(n):
+        c = Fraction(math.comb(2 * k, k), 4**k) ** 2
+        total += mpmath.mpf(c.numerator) / c.denominator * m**k
+    return total
+
+
+@pytest.mark.parametrize("m,n", [(0.1, 1), (0.1, 2), (0.1, 5), (0.1, 10), (0.5, 3), (0.5, 12), (0.5, 25),
+                                 (0.9, 4), (0.9, 25), (0.99, 60)])
+def test_double_series_term_by_term_against_mpmath(m, n):
+    """The double-precision (66) after n terms equals the exact n-term sum to (2n + 4) ulp, and
+    the sum of n + 1 terms is farther than that: one term more or less fails the test."""
+    got = float(P.series_ratio(np.array([m]), n)[0][0])
+    with mpmath.workdps(40):
+        exact, one_more = _series_mp(mpmath.mpf(m), n), _series_mp(mpmath.mpf(m), n + 1)
+        tol = (2 * n + 4) * np.spacing(float(exact))
+        assert abs(got - exact) <= tol
+        assert abs(got - one_more) > tol
+        if n > 1:
+            assert abs(got - _series_mp(mpmath.mpf(m), n - 1)) > tol
+    mp_sum = P.period_ratio_mp(phi0=2 * math.asin(math.sqrt(m)), dps=30, method="series", terms=n)
+    assert abs(float(mp_sum) - got) <= tol + 1e-15 * got  # the mpmath context runs the same Horner loop

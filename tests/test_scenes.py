@@ -273,7 +273,8 @@ BAD = [
     ('drag = "quadratic"', 'drag = "cubic"', "medium.drag", 8, "cubic"),
     ('drag = "quadratic"', "drag = 2", "medium.drag", 8, "string"),
     ("coefficient = 0.5", 'coefficient = "0.5 1/s"', "medium.coefficient", 9, "rate"),
-    ("coefficient = 0.5", 'coefficient = "0.5 furlong"', "medium.coefficient", 9, "unknown unit"),
+    ("coefficient = 0.5", 'coefficient = "0.5 blorp"', "medium.coefficient", 9, "unknown unit"),
+    ("coefficient = 0.5", 'coefficient = "0.5 furlong"', "medium.coefficient", 9, "length"),
     ("coefficient = 0.5", "coefficient = 0", "medium.coefficient", 9, "positive"),
     ("coefficient = 0.5", "", "medium.coefficient", 7, "missing"),
     ('drag = "quadratic"', 'drag = "none"', "medium.coefficient", 9, "no meaning"),
@@ -287,12 +288,38 @@ BAD = [
     ("tolerance = 1e-4", "tolerance = 0", "question.tolerance", 13, "positive"),
     ("[question]", "[questions]", "questions", 10, "unknown table"),
     ("duration = 4.0", "duration = ", None, 12, "not valid TOML"),
+    ("length = 1.0          # m", 'length = "1_ m"', "pendulum.length", 2, "unit"),
+    ("length = 1.0          # m", "length = " + "9" * 401, "pendulum.length", 2, "too large"),
+    ("length = 1.0          # m", "length = 1e-300", "pendulum.length", 2, "between"),
+    ("length = 1.0          # m", 'length = "1 degC"', "pendulum.length", 2, "temperature"),
+    ("g = 9.81", 'g = "9.81 m/s"', "pendulum.g", 3, "speed"),
+    ("g = 9.81", "g = 1e300", "pendulum.g", 3, "between"),
+    ("displacement = 0.1", 'displacement = "0.1 s"', "start.displacement", 5, "time"),
+    ("displacement = 0.1", "amplitude_deg = 89.9999999", "start.amplitude_deg", 5, "horizontal"),
+    ("displacement = 0.1", 'amplitude_deg = "30 m"', "start.amplitude_deg", 5, "angle"),
+    ("displacement = 0.1", 'amplitude_deg = "1.6 rad"', "start.amplitude_deg", 5, "90"),
+    ("speed = 0.1", 'speed = "0.1 m"', "start.speed", 6, "length"),
+    ("speed = 0.1", "speed = [1, 2]", "start.speed", 6, "array"),
+    ("coefficient = 0.5", "coefficient = 1e300", "medium.coefficient", 9, "too large"),
+    ('quantity = "trajectory"', "quantity = 3", "question.quantity", 11, "string"),
+    ("duration = 4.0", 'duration = "4 m"', "question.duration", 12, "length"),
+    ("duration = 4.0", 'duration = "4 furlong/s"', "question.duration", 12, "speed"),
+    ("tolerance = 1e-4", 'tolerance = "1e-4 parsec/fortnight"', "question.tolerance", 13, "speed"),
+    ("tolerance = 1e-4", 'tolerance = "1e-4"', "question.tolerance", 13, None),
+    ("[pendulum]", '[scene]\ntitle = "a\\u001b[31m"\n[pendulum]', "scene.title", 2, "control characters"),
+    ("[pendulum]", "[scene]\ntitle = 3\n[pendulum]", "scene.title", 2, "string"),
+    ("[pendulum]", "[scene]\nnotes = [1]\n[pendulum]", "scene.notes", 2, "string"),
+    ("[pendulum]", "[scene]\nauthor = 'x'\n[pendulum]", "scene.author", 2, "unknown key"),
+    ("[pendulum]", "pendulum = 1\n[start2]", "pendulum", 1, "must be a table"),
 ]
 
 
 @pytest.mark.parametrize("old,new,key,line,words", BAD, ids=[f"{b[2]}-{i}" for i, b in enumerate(BAD)])
 def test_bad_scene_names_key_and_line(old, new, key, line, words):
     assert old in BASE
+    if words is None:  # a string without a unit is accepted in SI
+        assert scenes.parse(BASE.replace(old, new)).tolerance == 1e-4
+        return
     with pytest.raises(scenes.SceneError) as exc:
         scenes.parse(BASE.replace(old, new), source="s.toml")
     e = exc.value
@@ -336,12 +363,12 @@ def test_key_lines_with_quotes_dotted_keys_and_multiline_strings():
     text = ('[scene]\nnotes = """two\nlength = 5\n"""\n[pendulum]\n"length" = 1.0\n'
             '[start]\ndisplacement = 0.1\nspeed = 0.1\n[medium]\ndrag = "none"\n'
             "[question]\nquantity = \"trajectory\"\nduration = 1.0\ntolerance = 'x'\n")
-    lines = scenes._key_lines(text)
+    lines = scenes.key_lines(text)
     assert lines["pendulum.length"] == 6 and "scene.length" not in lines
     with pytest.raises(scenes.SceneError) as exc:
         scenes.parse(text)
     assert (exc.value.key, exc.value.line) == ("question.tolerance", 15)
-    dotted = scenes._key_lines('pendulum.length = 1\n[start]\n  speed . "x" = 2\n')
+    dotted = scenes.key_lines('pendulum.length = 1\n[start]\n  speed . "x" = 2\n')
     assert dotted == {"pendulum.length": 1, "start": 2, "start.speed.x": 3}
 
 
@@ -370,3 +397,62 @@ def test_random_scenes_keep_their_promises():
             assert scenes.distance(q, r.value, rich.value) <= r.estimated_error
         if d.meets and d.chosen is not rich:
             assert scenes.distance(q, d.chosen.value, rich.value) <= d.scene.tolerance
+
+
+# --- issue 16: each reproduction, replayed --------------------------------------------------------------
+@pytest.mark.parametrize("name", ["classroom-period", "fig7-angular-momentum", "large-amplitude-period"])
+def test_shipped_scenes_give_json(name, capsys):
+    assert main(["scene", str(SCENES / f"{name}.toml"), "--json"]) in (0, 1)
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["model"] == EXPECTED[name][0] and isinstance(doc["meets_tolerance"], bool)
+    assert all(isinstance(r["confirmed"], bool) for r in doc["ladder"])
+
+
+def test_any_unit_of_the_right_dimension():
+    s = scenes.parse(BASE.replace("duration = 4.0", 'duration = "4000000 us"')
+                     .replace("tolerance = 1e-4", 'tolerance = "0.1 mm"').replace("speed = 0.1", 'speed = "10 cm/s"'))
+    assert s.duration == pytest.approx(4.0, rel=1e-15) and s.tolerance == pytest.approx(1e-4) and s.v0 == 0.1
+    assert scenes.parse(BASE.replace("displacement = 0.1", 'amplitude_deg = "0.5 rad"')).phi0 == pytest.approx(0.5)
+
+
+@pytest.mark.parametrize("tail,words", [
+    ("x = " + "[" * 100000 + "]" * 100000 + "\n", "nested"),
+    ("x = " + "{a = " * 3000 + "1" + "}" * 3000 + "\n", "nested"),
+    ("\0\1\2", "TOML"),
+])
+def test_hostile_toml_is_one_error(tail, words):
+    with pytest.raises(scenes.SceneError, match=words):
+        scenes.parse(BASE + tail)
+
+
+@pytest.mark.parametrize("make", [
+    lambda p: "/dev/zero",
+    lambda p: (p.write_bytes(b"\xff\xfe" * 10) and str(p)),
+    lambda p: (p.write_text("x = 1\n" * 300000) and str(p)),
+    lambda p: (p.write_text(BASE.replace('drag = "quadratic"', 'drag = "linear"').replace("coefficient = 0.5",
+                                                                                         "coefficient = 1e300"))
+               and str(p)),
+    lambda p: (p.write_text(BASE.replace("length = 1.0          # m", "length = 1e-300")
+                            .replace("displacement = 0.1", "amplitude_deg = 10")) and str(p)),
+])
+def test_hostile_scene_files_on_the_command_line(make, tmp_path):
+    import subprocess
+    import sys
+
+    path = make(tmp_path / "s.toml")
+    proc = subprocess.run([sys.executable, "-m", "quasicentral.cli", "scene", path], capture_output=True, text=True,
+                          timeout=120)
+    assert proc.returncode == 2 and proc.stdout == "", proc.stderr
+    assert proc.stderr.count("\n") == 1 and proc.stderr.startswith("quasicentral: error:")
+    assert "Traceback" not in proc.stderr and "Warning" not in proc.stderr
+
+
+def test_title_is_plain_text_in_the_plot_and_escaped_on_the_terminal(tmp_path, capsys):
+    p = tmp_path / "t.toml"
+    p.write_text('[scene]\ntitle = "$\\\\foo{$ and ∑"\n' + BASE.replace("duration = 4.0", "duration = 1.0")
+                 .replace("tolerance = 1e-4", "tolerance = 1e-2"))
+    assert main(["scene", str(p), "--plot", str(tmp_path / "t.png")]) == 0
+    assert (tmp_path / "t.png").read_bytes()[:4] == b"\x89PNG"
+    assert "$\\foo{$" in capsys.readouterr().out
+    err = scenes.SceneError("bad", "scene.title", 1, "a\x1b[31m.toml")
+    assert "\x1b" not in str(err) and "\\x1b" in str(err)

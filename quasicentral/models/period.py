@@ -9,17 +9,25 @@ c = cos(φ0/2) = sin(δ/2) directly:
 
     T/T0 = 2K(1 − p)/π = 1/AGM(1, c)        (DLMF 19.8.5)
 
-Methods (the same names in double precision and at any precision):
+Each method is written once over an arithmetic context (:data:`DOUBLE`: numpy arrays;
+:data:`MP`: mpmath at the working precision; :data:`BALL`: python-flint balls), the way mpmath
+writes a function once for its contexts; the context supplies the primitives (sin, the AGM,
+K from the complement, a quadrature, an ODE solver).  Methods (:class:`Method`):
 
 * ``ellipk`` — the default: ``scipy.special.ellipkm1(p)`` with the complement p given exactly
   (and the asymptote ln(4/c) where p would underflow); ``mpmath.ellipk`` / ``acb.elliptic_k``;
 * ``agm`` — the arithmetic-geometric mean 1/AGM(1, c) (no cancellation either; one ulp more);
 * ``series`` — (66) truncated after N terms, with a rigorous bound of the tail;
-* ``quad`` — quadrature of (60) written with the complement, 1/√(cos²ψ + p sin²ψ);
-* ``ode`` — integration of φ̈ = −(g/l) sin φ from the amplitude to the lowest point.
+* ``quad`` — quadrature of (60) after the substitution tan(π/2 − ψ) = c·sinh w, which turns it
+  into K = ∫₀^∞ dw/√(1 + c² sinh²w): no peak of width c at ψ = π/2, so it holds down to δ = 1e-300;
+* ``ode`` — integration of φ̈ = −(g/l) sin φ from rest at the amplitude to the lowest point;
+  above 90° the deviation from the top ψ = π − φ is integrated (ψ̈ = sin ψ from ψ = δ to π),
+  so that δ is never rounded away.
 
-Inputs are the amplitude φ0 in (0, π) *or* its complement δ = π − φ0 (which keeps full
-accuracy for amplitudes within 1e-300 of π, where φ0 itself cannot be stored).
+Inputs are the amplitude φ0 in (0, π) (radians, or ``amplitude_deg`` in degrees) *or* its
+complement δ = π − φ0 (which keeps full accuracy for amplitudes within 1e-300 of π, where φ0
+itself cannot be stored).  A decimal string is read exactly: 180° − A is formed in decimal,
+and the half-angle sines are computed at the string's precision before any rounding to double.
 
 >>> round(float(period_ratio(math.radians(90))), 15)
 1.180340599016096
@@ -29,208 +37,228 @@ from __future__ import annotations
 
 import math
 from decimal import ROUND_HALF_EVEN, Decimal, localcontext
+from enum import Enum
+from functools import cached_property
 
 import mpmath
 import numpy as np
 
-METHODS = ("agm", "series", "ellipk", "quad", "ode")
+from quasicentral.models.arithmetic import BALL, DOUBLE, LN4, MP, DomainError  # noqa: F401 - LN4 re-exported
+from quasicentral.notation import numbers
 
 
-class DomainError(ValueError):
-    """An input outside the physical domain."""
+class Method(str, Enum):
+    """A route to T/T0 (the value is its name on the command line)."""
+
+    AGM = "agm"
+    SERIES = "series"
+    ELLIPK = "ellipk"
+    QUAD = "quad"
+    ODE = "ode"
 
 
-# --- double precision, vectorized -------------------------------------------------------------
-def _complement_sine(phi0=None, delta=None) -> np.ndarray:
-    """c = cos(φ0/2) = sin(δ/2), computed from whichever input was given."""
-    if (phi0 is None) == (delta is None):
-        raise DomainError("give the amplitude or its complement, not both")
-    if delta is not None:
-        d = np.asarray(delta, dtype=float)
-        if not np.all(np.isfinite(d)) or np.any(d <= 0) or np.any(d >= math.pi):
-            raise DomainError("the complement π − φ0 must be in (0, π)")
-        return np.sin(d / 2)
-    a = np.asarray(phi0, dtype=float)
-    if not np.all(np.isfinite(a)) or np.any(a <= 0) or np.any(a >= math.pi):
-        raise DomainError("the amplitude must be in (0, π) rad")
-    return np.cos(a / 2)
-
-
-def agm_ratio(c: np.ndarray) -> np.ndarray:
-    """1/AGM(1, c), vectorized; converges quadratically (≤ 12 steps for c ≥ 1e-300)."""
-    a = np.ones_like(c)
-    b = np.array(c, dtype=float)
-    for _ in range(40):
-        if np.all(np.abs(a - b) <= 1e-15 * a):
-            break
-        a, b = 0.5 * (a + b), np.sqrt(a * b)
-    return 1.0 / (0.5 * (a + b))
-
-
-def ellipk_ratio(c: np.ndarray) -> np.ndarray:
-    """2K(1 − c²)/π from the complement: ``scipy.special.ellipkm1(p)``, p = c² given exactly
-    (1.3 ulp); for c < 1e-8 the asymptote K = ln(4/c) + O(c² ln c), exact to rounding there
-    and free of the underflow of c² (δ down to 1e-300)."""
-    from scipy.special import ellipkm1
-
-    c = np.asarray(c, dtype=float)
-    tiny = c < 1e-8
-    if not tiny.any():
-        return TWO_OVER_PI * ellipkm1(c * c)
-    with np.errstate(divide="ignore"):
-        k = np.where(tiny, LN4 - np.log(np.where(tiny, c, 1.0)), ellipkm1(np.where(tiny, 1.0, c * c)))
-    return TWO_OVER_PI * k
-
-
-LN4 = math.log(4.0)
+METHODS = tuple(m.value for m in Method)
+SERIES_MAX_TERMS = 10**6  # the one limit of the series (66), in every context and on the command line
 TWO_OVER_PI = 2 / math.pi
 
-SERIES_MAX_TERMS = 10**7
+
+def method_of(name) -> Method:
+    try:
+        return Method(name)
+    except ValueError:
+        raise DomainError(f"unknown method {name!r}; choose from {', '.join(METHODS)}") from None
 
 
-def series_coefficients(n_terms: int) -> np.ndarray:
-    """c_n = ((2n−1)!!/(2n)!!)², n = 0 … N−1, the coefficients of (66) in powers of k²."""
-    n = np.arange(1, n_terms, dtype=float)
-    return np.concatenate(([1.0], np.cumprod(((2 * n - 1) / (2 * n)) ** 2)))
+# --- the input: sin(φ0/2) and cos(φ0/2), once for every context --------------------------------
+def _is_text(x) -> bool:
+    return isinstance(x, (str, Decimal))
 
 
-def series_ratio(m: np.ndarray, n_terms: int) -> tuple[np.ndarray, np.ndarray]:
-    """(66) truncated after ``n_terms`` terms, and a bound of the neglected tail:
-    Σ_{n≥N} c_n mⁿ ≤ c_N m^N/(1 − m), since c_n decreases."""
+def _inside(ctx, x, upper) -> bool:
+    """0 < x < upper everywhere (True for balls: their domain is checked in mpmath first)."""
+    if ctx is DOUBLE:
+        return bool(x.min(initial=math.inf) > 0 and x.max(initial=-math.inf) < upper) if x.size else True
+    return ctx is BALL or 0 < x < upper
+
+
+class HalfAngle:
+    """s = sin(φ0/2) and c = cos(φ0/2) = sin(δ/2) of one input (amplitude in rad or deg, or the
+    complement δ = π − φ0), each computed without cancellation in the context ``ctx``.  In
+    double precision a decimal string is evaluated in mpmath at its own number of digits plus
+    30 and rounded once: 180° − A is never formed from a rounded A."""
+
+    def __init__(self, ctx, phi0=None, delta=None, amplitude_deg=None):
+        given = [(k, v) for k, v in (("phi0", phi0), ("delta", delta), ("deg", amplitude_deg)) if v is not None]
+        if len(given) != 1:
+            raise DomainError("give exactly one of the amplitude (rad or deg) and its complement")
+        self.ctx, (self.kind, raw) = ctx, given[0]
+        pi = ctx.pi()
+        if ctx is DOUBLE and _is_text(raw):
+            with mpmath.workdps(30 + numbers.digits(str(raw)) + max(0, -numbers.decimal(str(raw), "x").adjusted())):
+                exact = HalfAngle(MP, **{{"deg": "amplitude_deg"}.get(self.kind, self.kind): raw})
+                self.half, self.rest = None, None
+                self.__dict__["s"], self.__dict__["c"] = np.float64(exact.s), np.float64(exact.c)
+            return
+        if self.kind == "delta":
+            d = ctx.read(raw, "the complement π − φ0")
+            ctx.require(_inside(ctx, d, pi), "the complement π − φ0 must be in (0, π)")
+            self.half, self.rest = None, d / 2  # s = cos(δ/2), c = sin(δ/2): no π − δ
+        elif self.kind == "phi0":
+            a = ctx.read(raw, "the amplitude")
+            ctx.require(_inside(ctx, a, pi), "the amplitude must be in (0, π) rad")
+            self.half, self.rest = a / 2, None
+        else:
+            if _is_text(raw):
+                a_dec = numbers.decimal(raw, "the amplitude")
+                a, r = ctx.read(str(a_dec), "the amplitude"), ctx.read(str(180 - a_dec), "the amplitude")
+            else:
+                a = ctx.read(raw, "the amplitude")
+                r = 180 - a
+            ctx.require(_inside(ctx, a, 180),
+                        "the amplitude must be in (0, π) rad, i.e. (0°, 180°)")
+            self.half, self.rest = a * pi / 360, r * pi / 360
+
+    @cached_property
+    def s(self):
+        return self.ctx.cos(self.rest) if self.kind == "delta" else self.ctx.sin(self.half)
+
+    @cached_property
+    def c(self):
+        return self.ctx.sin(self.rest) if self.rest is not None else self.ctx.cos(self.half)
+
+
+# --- the methods, each written once --------------------------------------------------------------
+def _agm(ctx, h: HalfAngle, _terms):
+    """T/T0 = 1/AGM(1, c) (DLMF 19.8.5)."""
+    return 1 / ctx.agm1(h.c)
+
+
+def _ellipk(ctx, h: HalfAngle, _terms):
+    """T/T0 = 2K(1 − c²)/π, K from the complement c² (never from m)."""
+    return 2 * ctx.kc(h.c) / ctx.pi()
+
+
+def _series(ctx, h: HalfAngle, terms):
+    """(66) with m = s², its tail bounded with 1 − m = c²."""
+    return series_ratio(h.s * h.s, terms, p=h.c * h.c, ctx=ctx)[0]
+
+
+def _quad(ctx, h: HalfAngle, _terms):
+    """(60) with tan(π/2 − ψ) = c sinh w: K = ∫₀^∞ dw/√(1 + c² sinh²w), split where c sinh w = 1."""
+    def one(c):
+        w1 = math.asinh(1 / float(c)) if ctx is DOUBLE else mpmath.asinh(1 / c)
+        return 2 / ctx.pi() * ctx.integrate(lambda w: ctx.kernel(c, w),
+                                            [0, w1, w1 + 1, math.inf if ctx is DOUBLE else mpmath.inf])
+
+    return ctx.elementwise(one, h.c)
+
+
+def _quarter(ctx, s, c, rtol=1e-13):
+    """T/T0 as 4 × the time from rest at φ0 to the lowest point, in units of 1/Ω: φ̈ = −sin φ
+    from φ0 to 0 up to 90°, beyond ψ̈ = sin ψ (ψ = π − φ) from δ to π (δ never rounded away)."""
+    guess = ctx.pi() / 2 / ctx.agm1(c)  # the quarter period: a start for the solver
+    if c >= s:
+        t = ctx.first_passage(-1, 2 * ctx.atan2(s, c), 0 * s, guess, rtol)
+    else:
+        t = ctx.first_passage(1, 2 * ctx.atan2(c, s), ctx.pi(), guess, rtol)
+    return 2 * t / ctx.pi()
+
+
+def _ode(ctx, h: HalfAngle, _terms):
+    return ctx.elementwise(lambda s, c: _quarter(ctx, s, c), h.s, h.c)
+
+
+_ROUTES = {Method.AGM: _agm, Method.ELLIPK: _ellipk, Method.SERIES: _series, Method.QUAD: _quad, Method.ODE: _ode}
+
+
+# --- double precision, vectorized -----------------------------------------------------------------
+def agm_ratio(c) -> np.ndarray:
+    """1/AGM(1, c) in double precision (c = cos(φ0/2))."""
+    return 1.0 / DOUBLE.agm1(np.asarray(c, dtype=float))
+
+
+def ellipk_ratio(c) -> np.ndarray:
+    """2K(1 − c²)/π in double precision from the complement c = cos(φ0/2) (see ``_Double.kc``)."""
+    return TWO_OVER_PI * DOUBLE.kc(c)
+
+
+def series_coefficients(n_terms: int, ctx=DOUBLE):
+    """c_n = ((2n−1)!!/(2n)!!)², n = 0 … N−1, the coefficients of (66) in powers of m = k²."""
+    return ctx.coefficients(n_terms)
+
+
+def series_ratio(m, n_terms: int, *, p=None, ctx=DOUBLE):
+    """(66) truncated after ``n_terms`` terms (Horner), and a bound of the neglected tail:
+    Σ_{n≥N} c_n mⁿ ≤ c_N m^N/(1 − m), since c_n decreases; ``p`` = 1 − m when known exactly."""
     if not 1 <= n_terms <= SERIES_MAX_TERMS:
         raise DomainError(f"the number of terms must be between 1 and {SERIES_MAX_TERMS}")
-    coef = series_coefficients(n_terms + 1)
-    m = np.asarray(m, dtype=float)
-    total = np.zeros_like(m)
-    for cn in coef[-2::-1]:  # Horner
+    coef = series_coefficients(n_terms + 1, ctx)
+    if ctx is DOUBLE:
+        m = np.asarray(m, dtype=float)
+    p = 1 - m if p is None else p
+    total = 0 * m
+    for cn in coef[-2::-1]:
         total = total * m + cn
-    with np.errstate(divide="ignore"):
-        tail = coef[-1] * m**n_terms / (1 - m)
+    with np.errstate(divide="ignore", over="ignore"):
+        tail = coef[-1] * m**n_terms / p
     return total, tail
 
 
-def period_ratio(phi0=None, *, delta=None, method: str = "ellipk", terms: int = 4):
-    """T/T0 in double precision for scalars or arrays of amplitudes (radians)."""
-    c = _complement_sine(phi0, delta)
-    if method == "agm":
-        return agm_ratio(c)
-    p = c * c
-    if method == "ellipk":
-        return ellipk_ratio(c)
-    if method == "series":
-        m = 1 - p if delta is not None else np.sin(np.asarray(phi0, dtype=float) / 2) ** 2
-        return series_ratio(m, terms)[0]
-    if method == "quad":
-        from scipy.integrate import quad
-
-        f = np.vectorize(lambda pp: quad(lambda s: 1 / math.sqrt(math.cos(s) ** 2 + pp * math.sin(s) ** 2),
-                                         0, math.pi / 2, epsabs=0, epsrel=2e-14, limit=200)[0])
-        return 2 / math.pi * f(p)
-    if method == "ode":
-        return np.vectorize(ode_ratio)(np.arccos(np.clip(1 - 2 * p, -1, 1)) if phi0 is None else phi0)
-    raise DomainError(f"unknown method {method!r}; choose from {', '.join(METHODS)}")
+def period_ratio(phi0=None, *, delta=None, amplitude_deg=None, method: str = "ellipk", terms: int = 4):
+    """T/T0 in double precision for scalars or arrays of amplitudes (radians or degrees) or
+    complements; decimal strings are read exactly (see :class:`HalfAngle`)."""
+    route = _ROUTES[method_of(method)]
+    return route(DOUBLE, HalfAngle(DOUBLE, phi0, delta, amplitude_deg), terms)
 
 
 def ode_ratio(phi0: float, rtol: float = 1e-13) -> float:
-    """T/T0 by integrating φ'' = −sin φ (time in units of 1/Ω) from rest at φ0 to the lowest
-    point (DOP853 with an event), times 4."""
-    from scipy.integrate import solve_ivp
+    """T/T0 by integrating the pendulum equation in double precision (the ``ode`` method)."""
+    h = HalfAngle(DOUBLE, phi0)
+    return float(_quarter(DOUBLE, float(h.s), float(h.c), rtol))
 
-    def lowest(t, y):
-        return y[0]
 
-    lowest.terminal, lowest.direction = True, -1
-    span = 4 * (math.log(8 / max(math.cos(phi0 / 2), 1e-300)) + 2)
-    sol = solve_ivp(lambda t, y: (y[1], -math.sin(y[0])), (0, span), (phi0, 0.0), method="DOP853",
-                    rtol=rtol, atol=rtol * 1e-2, events=lowest)
-    return 4 * sol.t_events[0][0] / (2 * math.pi)
+def series_error(phi0=None, *, delta=None, amplitude_deg=None, terms: int = 4):
+    """(T/T0 by the series, the bound of its tail) in double precision."""
+    h = HalfAngle(DOUBLE, phi0, delta, amplitude_deg)
+    return series_ratio(h.s * h.s, terms, p=h.c * h.c)
 
 
 # --- any precision ----------------------------------------------------------------------------
-def period_ratio_mp(phi0: str | None = None, *, delta: str | None = None, amplitude_deg: str | None = None,
-                    dps: int = 30, method: str = "ellipk", terms: int = 4):
+def _input_digits(*texts) -> int:
+    return max((numbers.digits(str(t)) for t in texts if _is_text(t)), default=0)
+
+
+def period_ratio_mp(phi0=None, *, delta=None, amplitude_deg=None, dps: int = 30, method: str = "ellipk",
+                    terms: int = 4):
     """T/T0 at ``dps`` digits (an mpmath number, computed with guard digits in a local context).
-    Inputs are decimal strings read exactly (never rounded through a double)."""
-    with mpmath.workdps(dps + 20):
-        c = _complement_sine_mp(phi0, delta, amplitude_deg)
-        p = c * c
-        if method == "agm":
-            r = 1 / mpmath.agm(1, c)
-        elif method == "ellipk":
-            # m = 1 − p needs the digits of p too: raise the precision by p's decimal exponent
-            with mpmath.workdps(dps + 20 + max(0, -int(mpmath.floor(mpmath.log10(p))))):
-                r = 2 / mpmath.pi * mpmath.ellipk(1 - p)
-        elif method == "series":
-            m = 1 - p
-            if not 1 <= terms <= 10**6:
-                raise DomainError("the number of terms must be between 1 and 1000000")
-            total, cn = mpmath.mpf(0), mpmath.mpf(1)
-            for n in range(terms):
-                if n:
-                    cn *= (mpmath.mpf(2 * n - 1) / (2 * n)) ** 2
-                total += cn * m**n
-            r = total
-        elif method == "quad":
-            r = 2 / mpmath.pi * mpmath.quad(lambda s: 1 / mpmath.sqrt(mpmath.cos(s) ** 2 + p * mpmath.sin(s) ** 2),
-                                            [0, mpmath.pi / 2])
-        elif method == "ode":
-            phi = 2 * mpmath.acos(c)
-            f = mpmath.odefun(lambda t, y: [y[1], -mpmath.sin(y[0])], 0, [phi, 0])
-            guess = mpmath.pi / 2 * (1 / mpmath.agm(1, c))  # a start for the root only
-            tq = mpmath.findroot(lambda t: f(t)[0], guess)
-            r = 4 * tq / (2 * mpmath.pi)
-        else:
-            raise DomainError(f"unknown method {method!r}; choose from {', '.join(METHODS)}")
+    Inputs are decimal strings read exactly (never rounded through a double) or floats taken
+    at their binary values."""
+    route = _ROUTES[method_of(method)]
+    with mpmath.workdps(dps + 20 + _input_digits(phi0, delta, amplitude_deg)):
+        r = route(MP, HalfAngle(MP, phi0, delta, amplitude_deg), terms)
     with mpmath.workdps(dps):
         return +r
 
 
-def _complement_sine_mp(phi0, delta, amplitude_deg):
-    given = [x is not None for x in (phi0, delta, amplitude_deg)]
-    if sum(given) != 1:
-        raise DomainError("give exactly one of the amplitude (rad or deg) and its complement")
-    if delta is not None:
-        d = _exact(delta, "the complement")
-        if not 0 < d < mpmath.pi:
-            raise DomainError("the complement π − φ0 must be in (0, π)")
-        return mpmath.sin(d / 2)
-    a = _exact(phi0, "the amplitude") if phi0 is not None else _exact(amplitude_deg, "the amplitude") * mpmath.pi / 180
-    if not 0 < a < mpmath.pi:
-        raise DomainError("the amplitude must be in (0, π) rad, i.e. (0°, 180°)")
-    return mpmath.cos(a / 2)
-
-
-def _exact(text, what: str):
-    """A decimal string read exactly, or a float taken at its exact binary value."""
-    try:
-        val = mpmath.mpf(text) if isinstance(text, float) else mpmath.mpf(str(text).strip())
-    except (ValueError, TypeError):
-        raise DomainError(f"{what} must be a number, not {text!r}") from None
-    if not mpmath.isfinite(val):
-        raise DomainError(f"{what} must be finite, not {text!r}")
-    return val
-
-
 # --- correctly rounded, with balls -------------------------------------------------------------
-def period_ratio_rounded(*, delta: str | None = None, phi0: str | None = None, amplitude_deg: str | None = None,
-                         digits: int = 30, method: str = "ellipk") -> str:
+def period_ratio_rounded(*, delta=None, phi0=None, amplitude_deg=None, digits: int = 30,
+                         method: str = "ellipk") -> str:
     """T/T0 correctly rounded to ``digits`` significant digits (round-half-even), proved with
     python-flint balls (``arb.agm`` or ``acb.elliptic_k``): the precision rises until both ends
-    of the ball round alike."""
+    of the ball round alike (python-flint's ``good()`` strategy)."""
     import flint
 
-    with mpmath.workdps(30):  # the same domain checks as every other route, before any ball
-        _complement_sine_mp(phi0, delta, amplitude_deg)
+    method = method_of(method)
+    if method not in (Method.AGM, Method.ELLIPK):
+        raise DomainError("correctly rounded values come from agm or ellipk only")
+    with mpmath.workdps(30 + _input_digits(phi0, delta, amplitude_deg)):  # the domain, before any ball
+        HalfAngle(MP, phi0, delta, amplitude_deg)
     old = flint.ctx.prec
     try:
         prec = int(3.33 * digits) + 32
         for _ in range(16):
             flint.ctx.prec = prec
-            c = _complement_sine_arb(phi0, delta, amplitude_deg)
-            if method == "agm":
-                ball = 1 / flint.arb(1).agm(c)
-            else:
-                ball = (2 * flint.acb.elliptic_k(flint.acb(1 - c * c)) / flint.arb.pi()).real
+            ball = _ROUTES[method](BALL, HalfAngle(BALL, phi0, delta, amplitude_deg), 0)
             if ball.is_finite():  # near π the ball of 1 − c² may still contain 1
                 lo, hi = _round_decimal(ball.lower(), digits), _round_decimal(ball.upper(), digits)
                 if lo == hi:
@@ -239,15 +267,6 @@ def period_ratio_rounded(*, delta: str | None = None, phi0: str | None = None, a
         raise ArithmeticError("no convergence of the ball to a correctly rounded value")
     finally:
         flint.ctx.prec = old
-
-
-def _complement_sine_arb(phi0, delta, amplitude_deg):
-    import flint
-
-    if delta is not None:
-        return (flint.arb(str(delta)) / 2).sin()
-    a = flint.arb(str(phi0)) if phi0 is not None else flint.arb(str(amplitude_deg)) * flint.arb.pi() / 180
-    return (a / 2).cos()
 
 
 def _round_decimal(x, digits: int) -> str:

@@ -39,6 +39,8 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
+from quasicentral.models.equations import System, rhs
+
 
 @dataclass(frozen=True)
 class EllipticOps:
@@ -145,18 +147,14 @@ MP = _mp()
 # --- the full motion (26)–(27) -----------------------------------------------------------------
 def integrate_full(t, R0, v0, Omega, beta, rtol: float = 1e-12):
     """(26)–(27) integrated with scipy's DOP853 (the drag's kink where the speed passes through
-    zero is crossed by the adaptive step; error ~1e-12 relative at rtol 1e-12)."""
+    zero is crossed by the adaptive step; error ~1e-12 relative at rtol 1e-12).  The right-hand
+    side is :func:`quasicentral.models.equations.rhs` of ``System.QUADRATIC``."""
     from scipy.integrate import solve_ivp
 
     t = np.asarray(t, dtype=float)
-    w2 = Omega * Omega
-
-    def rhs(_t, s):
-        sp = math.hypot(s[2], s[3])
-        return (s[2], s[3], -w2 * s[0] - beta * s[2] * sp, -w2 * s[1] - beta * s[3] * sp)
-
+    f = rhs(System.QUADRATIC, (Omega * Omega, beta), math)
     scale = max(R0, v0 / Omega)
-    sol = solve_ivp(rhs, (0.0, float(t.max()) if t.size else 0.0), (R0, 0.0, 0.0, v0), method="DOP853",
+    sol = solve_ivp(f, (0.0, float(t.max()) if t.size else 0.0), (R0, 0.0, 0.0, v0), method="DOP853",
                     t_eval=t, rtol=rtol, atol=rtol * scale * 1e-2)
     if not sol.success:
         raise ValueError(f"the integration of (26)–(27) failed: {sol.message}")
@@ -164,48 +162,12 @@ def integrate_full(t, R0, v0, Omega, beta, rtol: float = 1e-12):
 
 
 def integrate_full_mp(t, R0, v0, Omega, beta, dps: int):
-    """(26)–(27) with mpmath's Taylor-series integrator at ``dps`` digits (slow: seconds).
-    A planar swing (v0 = 0) is integrated segment by segment between the zeros of the speed,
-    where |ẋ| = σẋ is analytic (a Taylor method must not step across the kink)."""
+    """(26)–(27) with mpmath's Taylor-series integrator at ``dps`` digits (slow: seconds), by
+    :func:`quasicentral.models.reference.solve`; a planar swing (v0 = 0) is integrated stretch
+    by stretch between the zeros of the speed, where |ẋ| = σẋ is analytic."""
+    from quasicentral.models import reference
+
     with mpmath.workdps(dps + 10):
-        if v0 == 0:
-            xs = planar_segments(lambda sig: (lambda _t, s: [s[1], -Omega**2 * s[0] - sig * beta * s[1] ** 2]),
-                                 R0, t, 2 * mpmath.pi / Omega)
-            return np.array(xs, dtype=object), np.array([mpmath.mpf(0)] * len(xs), dtype=object)
-        f = mpmath.odefun(lambda _t, s: [s[2], s[3], -Omega**2 * s[0] - beta * s[2] * mpmath.hypot(s[2], s[3]),
-                                          -Omega**2 * s[1] - beta * s[3] * mpmath.hypot(s[2], s[3])],
-                          0, [R0, mpmath.mpf(0), mpmath.mpf(0), v0])
-        xs, ys = [], []
-        for tt in t:
-            st = f(tt)
-            xs.append(st[0])
-            ys.append(st[1])
-        return np.array(xs, dtype=object), np.array(ys, dtype=object)
-
-
-def planar_segments(rhs_for_sign, x0, times, period):
-    """Integrate a planar swing x(t) from rest at x0 with mpmath, restarting at each turning
-    point (velocity zero).  ``rhs_for_sign(σ)`` gives the right-hand side for (x, ẋ) on a
-    stretch where sign(ẋ) = σ.  Returns x at ``times`` (sorted or not)."""
-    order = sorted(range(len(times)), key=lambda i: times[i])
-    out = [None] * len(times)
-    t0, state = mpmath.mpf(0), [mpmath.mpf(x0), mpmath.mpf(0)]
-    sig = -1 if x0 > 0 else 1
-    h = period / 16
-    k = 0
-    while k < len(order):
-        sol = mpmath.odefun(rhs_for_sign(sig), t0, state)
-        # the next turning point: the first sign change of ẋ after t0, then a root
-        a = t0
-        while True:
-            b = a + h
-            if sig * sol(b)[1] <= 0:
-                break
-            a = b
-        tz = mpmath.findroot(lambda tt: sol(tt)[1], (a, b), solver="anderson")
-        while k < len(order) and mpmath.mpf(times[order[k]]) <= tz:
-            out[order[k]] = sol(mpmath.mpf(times[order[k]]))[0]
-            k += 1
-        state = [sol(tz)[0], mpmath.mpf(0)]
-        t0, sig = tz, -sig
-    return out
+        params = {"R0": R0, "v0": v0, "omega2": mpmath.mpf(Omega) ** 2, "beta": beta}
+        sol = reference.solve("quadratic", params, list(t), tol=10.0**-dps, method="mpmath")
+    return sol.x, sol.y

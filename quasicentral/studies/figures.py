@@ -25,7 +25,8 @@ from quasicentral.models import motion
 
 from quasicentral.models import period
 
-OMEGA = math.sqrt(10.0)
+from quasicentral.models.parameters import FIGURE_OMEGA as OMEGA  # the figures' Ω = √10
+
 R0 = V0 = 0.1
 
 
