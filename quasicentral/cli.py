@@ -146,11 +146,12 @@ def build_parser() -> argparse.ArgumentParser:
     _add_trajectory(sub)
 
     fg = _command(sub, "figures", "reproduce the texts' missing figures (CSV data and PNG plots)",
-                  "Writes figs. 7a, 7b, 8 (and the overdamped case) and 32 as CSV data and PNG plots, and the\n"
-                  "measured charts from their committed CSVs.  Each file is written through a temporary file and\n"
+                  "Writes each text's figures (those its folder's figures.py lists: for the shipped texts the\n"
+                  "figures lost in print and the measured charts) as CSV data and PNG plots.  Each file is written through a temporary file and\n"
                   "a rename, only inside DIR; a symbolic link where a file would go is refused (exit 2).",
                   "quasicentral figures\nquasicentral figures --out build/figures")
     fg.add_argument("--out", default="figures", metavar="DIR", help="output directory, created if needed (default figures)")
+    _add_text_options(fg)
 
     _add_charts(sub)
 
@@ -684,8 +685,6 @@ def _trajectory(args) -> int:
 
     from quasicentral.models import motion
 
-    if args.model not in motion.MODELS:
-        raise UsageError(f"--model: unknown model {args.model!r}; choose from {', '.join(motion.MODELS)}")
     if args.dps:
         # numbers are read, and the times spaced, at the asked precision plus guard digits
         with mpmath.workdps(args.dps + 20):
@@ -850,7 +849,7 @@ def _figures(args) -> int:
     out = _out_dir(args)
     try:
         with ProgressBar(args, "figures") as bar:
-            paths = figures.write_all(out, progress=bar)
+            paths = figures.write_all(out, _texts(args), progress=bar)
     except UnsafePath as exc:
         raise UsageError(f"--out: {exc}") from None
     except OSError as exc:

@@ -57,9 +57,6 @@ GOLDEN = ((("report",), LANGS), (("handout",), LANGS))
 REGENERATE = "quasicentral report --all --out reports"
 
 #: Which text a figure belongs to when the figure does not say (``Figure.source``).
-FIGURE_SOURCES = {"fig7a": "brepta1953", "fig7b": "brepta1953", "fig8": "brepta1953",
-                  "overdamped": "brepta1953", "fig32": "pendulum"}
-
 
 class LatexError(RuntimeError):
     """A document did not compile (or has undefined references); ``log`` names the log file."""
@@ -149,26 +146,22 @@ class FigureItem:
     name: str
     title: str
     sources: tuple[str, ...]
-    make: object  # the function of quasicentral.figures.ALL that builds it
+    make: object  # builds the figure (from its text's figures.py)
 
     @property
     def path(self) -> str:
         return f"{FIGURE_DIR}/{self.name}.png"
 
 
-@lru_cache(maxsize=None)
 def figure_items() -> tuple[FigureItem, ...]:
-    """Every figure that :data:`quasicentral.figures.ALL` offers, with the text(s) it belongs to."""
-    items = []
-    for make in figures_mod.ALL:
-        fig = make()
-        src = getattr(fig, "source", None) or FIGURE_SOURCES.get(fig.name)
-        if src is None and getattr(fig, "kind", "") == "period":
-            src = "pendulum"
-        ids = tuple(t.id for t in texts.active())
-        sources = (src,) if src in ids else ids
-        items.append(FigureItem(fig.name, fig.title, sources, make))
-    return tuple(items)
+    """Every figure of the active texts (their folders' figures.py), with the text(s) it belongs to."""
+    items: dict[str, FigureItem] = {}
+    for text in texts.active():
+        for fig in figures_mod.of_text(text):
+            known = items.get(fig.name)
+            sources = (known.sources if known else ()) + (text.id,)
+            items[fig.name] = FigureItem(fig.name, fig.title, sources, lambda fig=fig: fig)
+    return tuple(items.values())
 
 
 def figures_for(source: str) -> list[FigureItem]:
@@ -671,7 +664,7 @@ def generate(kinds=("report",), langs=("en",), outcomes: dict[str, Outcome] | No
 
 
 def figures_needed(docs: dict[str, str]) -> list[FigureItem]:
-    """The figures the documents include, in the order of quasicentral.figures.ALL."""
+    """The figures the documents include, in the order of the texts' figures."""
     return [f for f in figure_items() if any(f"{{{f.path}}}" in tex for tex in docs.values())]
 
 

@@ -124,6 +124,11 @@ class Text:
     def cleared(self) -> dict[str, errata_mod.Cleared]:
         return self._errata[1]
 
+    def figures_module(self):
+        """The text's ``figures.py`` imported (None when the folder has none)."""
+        path = self.root / "figures.py"
+        return _import(self, path) if path.is_file() else None
+
     def load_derivations(self) -> None:
         """Import the text's derivation modules (they register themselves) and check that
         derivations and catalog entries match one to one."""
@@ -154,12 +159,13 @@ def _check_size(path: Path) -> None:
         raise TextError(f"{path}: {size} bytes; a text's file is at most {MAX_FILE_BYTES} bytes")
 
 
-def _import(text: Text, path: Path) -> None:
+def _import(text: Text, path: Path):
+    """Import a module of the text's folder once (its derivations register themselves)."""
     name = (f"derivations.{text.id}.{path.stem}" if text.is_shipped
             else f"quasicentral_text_{re.sub(r'[^A-Za-z0-9_]', '_', text.id)}.{path.stem}")
     if name in sys.modules and getattr(sys.modules[name], "__file__", None) == str(path):
         # imported before (e.g. by a test): its derivations registered then
-        return
+        return sys.modules[name]
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
@@ -171,6 +177,7 @@ def _import(text: Text, path: Path) -> None:
     except Exception as exc:  # noqa: BLE001 - a user's module may raise anything: one line
         sys.modules.pop(name, None)
         raise TextError(f"{_frame_in(path, exc)}: {type(exc).__name__}: {exc}") from None
+    return module
 
 
 def _frame_in(path: Path, exc: BaseException) -> str:

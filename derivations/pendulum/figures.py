@@ -1,0 +1,35 @@
+"""Figure 32 of the pendulum text: T/T0 against the amplitude, with the truncations of the
+series (66); and the measured charts of the period."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from quasicentral.models import period
+from quasicentral.studies.figures import Figure, Kind, measured, measured_names
+
+SERIES_TERMS = (1, 2, 3, 4, 10, 50)
+
+
+def fig32() -> Figure:
+    deg = np.linspace(0.5, 179.5, 359)
+    rad = np.radians(deg)
+    exact = period.period_ratio(rad)
+    m = np.sin(rad / 2) ** 2
+    cols = [deg, exact] + [period.series_ratio(m, n)[0] for n in SERIES_TERMS]
+    names = ("amplitude_deg", "T_over_T0") + tuple(f"series_{n}" for n in SERIES_TERMS)
+    labels = ("exact (AGM)",) + tuple(f"(66), {n} term{'s' if n > 1 else ''}" for n in SERIES_TERMS)
+    return Figure("fig32", "Fig. 32: T/T0 against the amplitude, with truncations of (66)", names,
+                  np.column_stack(cols), Kind.CURVES, labels, "amplitude φ0 [°]", "T / T0", (0.9, 4.0))
+
+
+def _measured(name):
+    def make():
+        return measured(name)
+
+    make.__name__ = name
+    return make
+
+
+#: the text's figures, in the order its report shows them
+FIGURES = (fig32,) + tuple(_measured(n) for n in measured_names() if "period" in n)
