@@ -295,21 +295,19 @@ def initial_velocity():
 
 
 @derives("brepta1953:constant-K", uses=("brepta1953:dx-dt", "brepta1953:initial-velocity"),
-         unknowns=(K1, K1), domain=SMALL_DAMPING)
+         unknowns=(K1,), domain=SMALL_DAMPING)
 def constant_K():
-    """0 = −κR0 + ωK, so K = R0κ/ω: ẋ(0) = 0."""
+    """0 = −κR0 + ωK, so K = R0κ/ω: ẋ(0) = 0 (each printed form of K is compared with it)."""
     _, vel = initial_state()
-    val = sp.solve(derived("brepta1953:dx-dt").rhs.subs(t, 0) - vel[0], K1)[0]
-    return [sp.Eq(K1, val), sp.Eq(K1, val)]
+    return sp.Eq(K1, sp.solve(derived("brepta1953:dx-dt").rhs.subs(t, 0) - vel[0], K1)[0])
 
 
 @derives("brepta1953:constant-M", uses=("brepta1953:dy-dt", "brepta1953:initial-velocity"),
-         unknowns=(M1, M1), domain=SMALL_DAMPING)
+         unknowns=(M1,), domain=SMALL_DAMPING)
 def constant_M():
-    """v0 = ωM, so M = v0/ω: ẏ(0) = v0."""
+    """v0 = ωM, so M = v0/ω: ẏ(0) = v0 (each printed form of M is compared with it)."""
     _, vel = initial_state()
-    val = sp.solve(derived("brepta1953:dy-dt").rhs.subs(t, 0) - vel[1], M1)[0]
-    return [sp.Eq(M1, val), sp.Eq(M1, val)]
+    return sp.Eq(M1, sp.solve(derived("brepta1953:dy-dt").rhs.subs(t, 0) - vel[1], M1)[0])
 
 
 def initial_value_ics(coord: sp.Expr, index: int) -> dict:

@@ -221,13 +221,13 @@ def direction_cosines():
     return [sp.Eq(sp.cos(alpha), unit[0]), sp.Eq(sp.sin(alpha), unit[1])]
 
 
-@derives("brepta1953:speed", unknowns=(D(s), D(s)), domain=SPEED_DOMAIN)
+@derives("brepta1953:speed", unknowns=(D(s),), domain=SPEED_DOMAIN)
 def speed():
-    """ds/dt = |ṙ| (s = ∫₀ᵗ |ṙ| dt, the arc length); v is the same speed |ṙ|."""
+    """ds/dt = |ṙ| (s = ∫₀ᵗ |ṙ| dt, the arc length); v is the same speed |ṙ| (each printed
+    row is compared with it)."""
     tau = sp.Symbol("tau", nonnegative=True)
     integrand = sp.sqrt(D(x) ** 2 + D(y) ** 2).subs(t, tau)
-    rate = sp.Integral(integrand, (tau, 0, t)).diff(t)
-    return [sp.Eq(D(s), rate), sp.Eq(D(s), rate)]
+    return sp.Eq(D(s), sp.Integral(integrand, (tau, 0, t)).diff(t))
 
 
 def equation_of_motion(i: int) -> sp.Eq:

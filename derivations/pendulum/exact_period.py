@@ -253,28 +253,13 @@ def angular_velocity():
     return {phi: exact_motion()}
 
 
-@derives("pendulum:equation-of-motion", mode="substitute")
-def equation_of_motion():
-    """Euler–Lagrange: ml²φ̈ + mgl sin φ = 0, i.e. φ̈ = −(g/l) sin φ; the printed relation must
-    hold on every state of every motion (φ̈ eliminated, φ and φ̇ free)."""
-    return {D(phi, 2): acceleration()}
-
-
-@derives("pendulum:energy-product", mode="substitute", uses=("pendulum:equation-of-motion",))
-def energy_product():
-    """(φ̈ + (g/l) sin φ)·φ̇ = 0 on every motion (φ̈ from the Euler–Lagrange equation)."""
-    return {D(phi, 2): acceleration()}
-
-
-@derives("pendulum:energy-derivatives", mode="substitute", uses=("pendulum:energy-product",))
-def energy_derivatives():
-    """d/dt(½φ̇²) − (g/l) d/dt(cos φ) = φ̇(φ̈ + (g/l) sin φ) = 0 on every motion."""
-    return {D(phi, 2): acceleration()}
-
-
-@derives("pendulum:energy-derivative-sum", mode="substitute", uses=("pendulum:energy-derivatives",))
-def energy_derivative_sum():
-    """d/dt(h/(ml²)) = d/dt(½φ̇² − (g/l) cos φ) = 0 on every motion."""
+@derives("pendulum:equation-of-motion", "pendulum:energy-product", "pendulum:energy-derivatives",
+         "pendulum:energy-derivative-sum", mode="substitute")
+def every_state_of_a_motion():
+    """Euler–Lagrange: ml²φ̈ + mgl sin φ = 0, i.e. φ̈ = −(g/l) sin φ.  Each printed relation of
+    the energy argument — the equation of motion, its product with φ̇, the derivatives
+    d/dt(½φ̇²) − (g/l) d/dt(cos φ) = φ̇(φ̈ + (g/l) sin φ) and their sum — must hold on every state
+    of every motion (φ̈ eliminated, φ and φ̇ free)."""
     return {D(phi, 2): acceleration()}
 
 

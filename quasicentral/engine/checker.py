@@ -115,12 +115,18 @@ def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[
         return out
     derived = [_doit_derivatives(d) if isinstance(d, sp.Basic) else d for d in as_list(result)]
     printed = [_doit_derivatives(p) for p in printed]
+    unknowns = derivation.unknowns
+    if len(derived) == 1 and len(printed) > 1:
+        # one derived relation, printed in several rows (a chain of equal forms): each row is
+        # compared with it
+        derived = derived * len(printed)
+        unknowns = unknowns * len(printed) if unknowns is not None and len(unknowns) == 1 else unknowns
     if len(derived) != len(printed):
         raise CannotCompare(f"printed has {len(printed)} relation(s), derivation gives {len(derived)}")
     if mode is Mode.EXPRESSION:
         return [Claim(p, d, "value") for p, d in zip(printed, derived)]
     out = []
-    unknowns = derivation.unknowns or tuple(d.lhs for d in derived)
+    unknowns = unknowns or tuple(d.lhs for d in derived)
     for p, d, unk in zip(printed, derived, unknowns):
         unk = _doit_derivatives(unk)
         if p in (sp.true, sp.false):

@@ -77,21 +77,24 @@ class RegistryError(ValueError):
     pass
 
 
-def derives(eid: str, *, mode: Mode | str = Mode.SOLVE, domain: Domain | None = None, uses: tuple[str, ...] = (),
-            unknowns: tuple | None = None):
-    """Register the decorated function as the derivation of catalog entry ``eid``."""
+def derives(eid: str, *more: str, mode: Mode | str = Mode.SOLVE, domain: Domain | None = None,
+            uses: tuple[str, ...] = (), unknowns: tuple | None = None):
+    """Register the decorated function as the derivation of catalog entry ``eid`` — and of the
+    entries ``more``, where the text prints the same relation (or relations that hold on the
+    same model) several times: one step, compared with each printed display."""
     try:
         mode = Mode(mode)
     except ValueError:
         raise RegistryError(f"{eid}: unknown mode {mode!r} (one of: {', '.join(m.value for m in Mode)})") from None
 
     def deco(func):
-        if eid in REGISTRY:
-            raise RegistryError(f"duplicate derivation for {eid!r} ({func.__module__}.{func.__name__})")
         if not (func.__doc__ or "").strip():
             raise RegistryError(f"{eid}: a derivation states its formula in a docstring")
-        REGISTRY[eid] = Derivation(eid, func, mode, domain or Domain(), tuple(uses), unknowns,
-                                   inspect.cleandoc(func.__doc__), func.__module__)
+        for one in (eid, *more):
+            if one in REGISTRY:
+                raise RegistryError(f"duplicate derivation for {one!r} ({func.__module__}.{func.__name__})")
+            REGISTRY[one] = Derivation(one, func, mode, domain or Domain(), tuple(uses), unknowns,
+                                       inspect.cleandoc(func.__doc__), func.__module__)
         return func
 
     return deco
@@ -104,11 +107,17 @@ def derived(eid: str):
     if eid not in _MEMO:
         if eid not in REGISTRY:
             raise RegistryError(f"no derivation registered for {eid!r}")
-        _STACK.append(eid)
-        try:
-            _MEMO[eid] = REGISTRY[eid].func()
-        finally:
-            _STACK.pop()
+        func = REGISTRY[eid].func
+        twin = next((e for e in _MEMO if REGISTRY[e].func is func), None)  # one step, several displays
+        if twin is not None:
+            _MEMO[eid] = _MEMO[twin]
+            _USED[eid] = set(_USED.get(twin, ()))
+        else:
+            _STACK.append(eid)
+            try:
+                _MEMO[eid] = func()
+            finally:
+                _STACK.pop()
     return _MEMO[eid]
 
 
