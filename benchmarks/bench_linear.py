@@ -4,7 +4,6 @@ evaluation at the exact double inputs) across κ/Ω, and cost per point on array
     python3 benchmarks/bench_linear.py
 """
 
-import math
 
 import mpmath
 import numpy as np

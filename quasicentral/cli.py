@@ -18,6 +18,7 @@ records to a callback.
 from __future__ import annotations
 
 import argparse
+from contextlib import contextmanager
 import io
 import json
 import math
@@ -522,19 +523,28 @@ def _catalog(args) -> int:
     return EXIT_OK
 
 
-def _write_atomic(path: Path, text: str, option: str = "") -> None:
-    """Write via a temporary file and rename, so a failure never leaves a half-written file;
-    a symbolic link at ``path`` is refused."""
-    from quasicentral.files import UnsafePath, write_text
+@contextmanager
+def _writing(option: str, target):
+    """Turn a refused or failed write into one line naming ``option`` (exit 2)."""
+    from quasicentral.files import UnsafePath
 
-    name = f"{option} " if option else ""
+    name = f"{option}: " if option else ""
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        write_text(path, text)
+        yield
     except UnsafePath as exc:
         raise UsageError(f"{name}{exc}") from None
     except OSError as exc:
-        raise UsageError(f"{name}cannot write {path}: {exc.strerror or exc}") from None
+        raise UsageError(f"{name}cannot write to {target}: {exc.strerror or exc}") from None
+
+
+def _write_atomic(path: Path, text: str, option: str = "") -> None:
+    """Write via a temporary file and rename, so a failure never leaves a half-written file;
+    a symbolic link at ``path`` is refused."""
+    from quasicentral.files import write_text
+
+    with _writing(option, path):
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_text(path, text)
 
 
 def _out_dir(args) -> Path:
@@ -843,17 +853,11 @@ def _scene(args) -> int:
 
 
 def _figures(args) -> int:
-    from quasicentral.files import UnsafePath
     from quasicentral.studies import figures
 
     out = _out_dir(args)
-    try:
-        with ProgressBar(args, "figures") as bar:
-            paths = figures.write_all(out, _texts(args), progress=bar)
-    except UnsafePath as exc:
-        raise UsageError(f"--out: {exc}") from None
-    except OSError as exc:
-        raise UsageError(f"--out: cannot write figures to {args.out}: {exc.strerror or exc}") from None
+    with _writing("--out", args.out), ProgressBar(args, "figures") as bar:
+        paths = figures.write_all(out, _texts(args), progress=bar)
     for p in paths:
         print(p)
     return EXIT_OK
@@ -861,17 +865,12 @@ def _figures(args) -> int:
 
 def _report(args) -> int:
     from quasicentral.documents import report
-    from quasicentral.files import UnsafePath
 
     if args.all and (args.handout or args.lang is not None):
         raise UsageError("--all writes every document: leave out --handout and --lang")
     out = _out_dir(args)
-    try:
+    with _writing("--out", args.out):
         report.check_writable(out)
-    except UnsafePath as exc:
-        raise UsageError(f"--out: {exc}") from None
-    except OSError as exc:
-        raise UsageError(f"--out: cannot write to {args.out}: {exc.strerror or exc}") from None
     _texts(args)  # the texts named by --text (default: the shipped ones) are the ones built
     if args.all:
         jobs = list(report.GOLDEN)
@@ -883,20 +882,14 @@ def _report(args) -> int:
         docs: dict[str, str] = {}
         for kinds, langs in jobs:
             docs.update(report.generate(kinds, langs, outcomes))
-        try:
+        with _writing("--out", args.out):
             paths = report.write(out, dict(sorted(docs.items())), progress=bar)
-        except UnsafePath as exc:
-            raise UsageError(f"--out: {exc}") from None
-        except OSError as exc:
-            raise UsageError(f"--out: cannot write to {args.out}: {exc.strerror or exc}") from None
     for p in paths:
         print(p)
     if args.pdf:
         try:
-            with ProgressBar(args, "report") as bar:
+            with _writing("--out", args.out), ProgressBar(args, "report") as bar:
                 pdfs = report.compile_all(out, [n for n in sorted(docs) if n != report.VERSIONS_FILE], progress=bar)
-        except UnsafePath as exc:
-            raise UsageError(f"--out: {exc}") from None
         except report.LatexError as exc:
             print(f"quasicentral: error: {exc}", file=sys.stderr)
             return EXIT_UNEXPECTED

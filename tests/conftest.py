@@ -7,7 +7,6 @@ import pytest
 from hypothesis import settings
 
 from quasicentral.engine import texts
-from quasicentral.engine import catalog
 from quasicentral.engine.checker import Options
 
 # Property tests explore at random on a developer's machine (where they found, e.g., the loss of

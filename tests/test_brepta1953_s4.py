@@ -9,8 +9,6 @@ import sympy as sp
 
 from derivations.brepta1953 import s4 as s4
 from quasicentral.engine import texts
-from quasicentral.engine import catalog
-from quasicentral.engine import errata
 from quasicentral.engine.checker import Options, check
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import REGISTRY, derived

@@ -13,8 +13,6 @@ from scipy.integrate import solve_ivp
 
 from derivations.brepta1953 import s5 as s5
 from quasicentral.engine import texts
-from quasicentral.engine import catalog
-from quasicentral.engine import errata
 from quasicentral.notation.domain import substitute_definitions
 from quasicentral.engine.registry import derived
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT

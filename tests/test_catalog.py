@@ -4,9 +4,7 @@ import pytest
 import sympy as sp
 
 from quasicentral.engine import texts
-from quasicentral.engine import catalog
 
-from quasicentral.engine import errata
 from quasicentral.engine.catalog import CatalogError, load_file
 from quasicentral.notation.dimensions import check_relation
 from quasicentral.engine.registry import REGISTRY

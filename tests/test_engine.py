@@ -103,7 +103,6 @@ def test_symbolic_stage_and_its_time_bound():
 def test_dimensional_inconsistency_refutes_even_when_the_comparison_cannot_be_set_up(scratch_registry):
     """A relation whose sides differ in dimension is wrong: no failing derivation or unsolvable
     relation may turn it into "inconclusive" (mutation testing found T² = … undetected)."""
-    from quasicentral.engine import catalog
     from quasicentral.engine.checker import check
     from quasicentral.engine.registry import REGISTRY
 

@@ -5,7 +5,6 @@ import pytest
 import sympy as sp
 
 from quasicentral.engine import texts
-from quasicentral.engine import catalog
 
 from quasicentral.engine import mutate
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT

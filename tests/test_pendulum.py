@@ -11,7 +11,6 @@ from scipy.integrate import solve_ivp
 
 from derivations.pendulum import exact_period as P
 from quasicentral.engine import texts
-from quasicentral.engine import catalog
 from quasicentral.engine.registry import derived
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 

@@ -29,9 +29,7 @@ import sympy as sp
 from quasicentral.engine import texts
 from quasicentral import files
 
-from quasicentral.engine import catalog
 
-from quasicentral.engine import errata
 
 from quasicentral.documents import report
 from quasicentral.notation import symbols as S

@@ -3,7 +3,6 @@ small-swing limit, and double precision against mpmath (planar swings across the
 
 import math
 
-import mpmath
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp

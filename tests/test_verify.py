@@ -7,9 +7,7 @@ import sympy as sp
 from quasicentral.engine import texts
 from quasicentral.notation import bridge
 
-from quasicentral.engine import catalog
 
-from quasicentral.engine import errata
 from quasicentral.engine.checker import claims_for
 from quasicentral.notation.domain import substitute_definitions
 from quasicentral.engine.registry import REGISTRY, derived

@@ -125,10 +125,10 @@ def section_titles() -> dict[tuple[str, str], str]:
     import tomllib
 
     out = {}
-    for text in texts.active():
-        for path in text.catalog_files:
+    for t in texts.active():
+        for path in t.catalog_files:
             data = tomllib.loads(path.read_text(encoding="utf-8"))
-            out[(text.id, str(data["section"]))] = data.get("title", "")
+            out[(t.id, str(data["section"]))] = data.get("title", "")
     return out
 
 
@@ -156,10 +156,10 @@ class FigureItem:
 def figure_items() -> tuple[FigureItem, ...]:
     """Every figure of the active texts (their folders' figures.py), with the text(s) it belongs to."""
     items: dict[str, FigureItem] = {}
-    for text in texts.active():
-        for fig in figures_mod.of_text(text):
+    for t in texts.active():
+        for fig in figures_mod.of_text(t):
             known = items.get(fig.name)
-            sources = (known.sources if known else ()) + (text.id,)
+            sources = (known.sources if known else ()) + (t.id,)
             items[fig.name] = FigureItem(fig.name, fig.title, sources, lambda fig=fig: fig)
     return tuple(items.values())
 

@@ -9,7 +9,6 @@ printed) must verify.  If an expectation fails, verification reports the entry a
 
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path

@@ -33,7 +33,6 @@ def by_stretches(times, reach, turn):
     has then stopped there, at rest; ``turn()`` restarts from that point with σ = sign ẋ
     flipped, so that every stretch is analytic and no step straddles the kink.  Returns (the
     states in the order of ``times``, the number of turning points)."""
-    order = sorted(range(len(times)), key=lambda i: times[i])
     out = [None] * len(times)
     turns = 0
     for i in order:
@@ -58,7 +57,6 @@ def scale(p) -> float:
 def solve_dop853(p, times: list[float], tol: float, extras: bool, branchwise: bool | None = None):
     from scipy.integrate import ode
 
-    order = sorted(range(len(times)), key=lambda i: times[i])
     pars = tuple(float(a) for a in p.pars())
     planar, kind = p.planar, p.kind
     om = math.sqrt(float(p.omega2))
@@ -211,7 +209,6 @@ def solve_heyoka(p, times, tol: float, extras: bool):
     import heyoka as hy
 
     ta, conv = _heyoka_integrator(p.kind, extras, float(tol))
-    order = sorted(range(len(times)), key=lambda i: times[i])
     pars = list(p.pars()) + ([mpmath.mpf(-1)] if p.planar else [])
     ta.time = conv(mpmath.mpf(0))
     ta.state[:] = np.array([conv(a) for a in initial(p, extras)], dtype=ta.state.dtype)
@@ -250,8 +247,7 @@ def solve_heyoka(p, times, tol: float, extras: bool):
 def solve_mpmath(p, times, tol: float, extras: bool):
     dps = int(-math.log10(tol)) + 8
     with mpmath.workdps(dps):
-        order = sorted(range(len(times)), key=lambda i: times[i])
-        pars = tuple(mpmath.mpf(a) for a in p.pars())
+            pars = tuple(mpmath.mpf(a) for a in p.pars())
         y0 = [mpmath.mpf(a) for a in initial(p, extras)]
         out = [None] * len(times)
         if not p.planar:
