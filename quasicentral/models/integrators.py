@@ -33,6 +33,7 @@ def by_stretches(times, reach, turn):
     has then stopped there, at rest; ``turn()`` restarts from that point with σ = sign ẋ
     flipped, so that every stretch is analytic and no step straddles the kink.  Returns (the
     states in the order of ``times``, the number of turning points)."""
+    order = sorted(range(len(times)), key=lambda i: times[i])
     out = [None] * len(times)
     turns = 0
     for i in order:
@@ -209,6 +210,7 @@ def solve_heyoka(p, times, tol: float, extras: bool):
     import heyoka as hy
 
     ta, conv = _heyoka_integrator(p.kind, extras, float(tol))
+    order = sorted(range(len(times)), key=lambda i: times[i])
     pars = list(p.pars()) + ([mpmath.mpf(-1)] if p.planar else [])
     ta.time = conv(mpmath.mpf(0))
     ta.state[:] = np.array([conv(a) for a in initial(p, extras)], dtype=ta.state.dtype)
@@ -247,7 +249,8 @@ def solve_heyoka(p, times, tol: float, extras: bool):
 def solve_mpmath(p, times, tol: float, extras: bool):
     dps = int(-math.log10(tol)) + 8
     with mpmath.workdps(dps):
-            pars = tuple(mpmath.mpf(a) for a in p.pars())
+        order = sorted(range(len(times)), key=lambda i: times[i])
+        pars = tuple(mpmath.mpf(a) for a in p.pars())
         y0 = [mpmath.mpf(a) for a in initial(p, extras)]
         out = [None] * len(times)
         if not p.planar:
