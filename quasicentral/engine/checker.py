@@ -36,12 +36,22 @@ from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, 
 
 @dataclass(frozen=True)
 class Options:
+    """The checker's settings; every threshold it uses is named here."""
+
     dps: int = 30  # first rung of the ladder; the second is 2 × dps
-    points: int = 20
+    points: int = 20  # in-domain points per claim
+    integral_points: int = 12  # per claim with an integral (a quadrature costs ~100× a closed form)
+    confirm_points: int = 4  # points evaluated on every rung even where the first rung agrees
     symbolic_seconds: float = 3.0
     symbolic: bool = True
     certify: bool = True
     certify_seconds: float = 1.0  # ball integrals can be slow: past this the witness stays uncertified
+    agreement_exponent: float = 0.6  # agreement: |p − d| ≤ 10^(−0.6·dps)·scale on each rung
+    stable_within: float = 1e-3  # a difference is real when it changes by less than this between rungs
+    scale_floor: float = 1e-6  # the scale is at least this fraction of the median magnitude
+    early_stop_after: int = 6  # points evaluated before a refutation may stop the run early ...
+    early_stop_disagreements: int = 3  # ... once this many of them disagree for good
+    remembered_values: int = 50_000  # derived values kept for an erratum's second comparison
 
     MIN_DPS = 15  # below, the agreement tolerance 10^(−0.6·dps) would be too loose to mean anything
 
@@ -206,8 +216,8 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
              if claim.scale is not None else None)
     syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
     try:
-        # a quadrature per point and rung costs ~100× a closed form: integrals get 12 points
-        count = min(opts.points, 12) if (p.has(sp.Integral) or d.has(sp.Integral)) else opts.points
+        integral = p.has(sp.Integral) or d.has(sp.Integral)
+        count = min(opts.points, opts.integral_points) if integral else opts.points
         pts = Sampler(domain, table, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(count)
     except KeyError as exc:
         return Inconclusive(Method.NONE, f"{exc.args[0]}")
@@ -224,41 +234,46 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     def fd(pt, dps):
         key = (d_key, tuple(sp.srepr(pt[a]) for a in d_args), dps)
         if key not in _DERIVED_VALUES:
-            if len(_DERIVED_VALUES) > 50_000:
+            if len(_DERIVED_VALUES) > opts.remembered_values:
                 _DERIVED_VALUES.clear()
             _DERIVED_VALUES[key] = +fd_own(*[bridge.mp_value(pt[a], dps) for a in d_args])
         return _DERIVED_VALUES[key]
 
-    rows = []  # per point: list over the ladder of (pv, dv, diff, mag)
+    def rung(pt, dps):
+        with mpmath.workdps(dps):
+            vals = [bridge.mp_value(pt[a], dps) for a in args]
+            pv, dv = +fp(*vals), fd(pt, dps)
+            mag = max(abs(pv), abs(dv))
+            if fs is not None:
+                mag = max(mag, abs(+fs(*vals)))
+            diff = abs(pv - dv)
+            if not (mpmath.isfinite(diff) and mpmath.isfinite(mag)):
+                raise ValueError("not finite")
+        return pv, dv, diff, mag
+
+    # The ladder, economically: every point on the first rung; the higher rungs where the first
+    # does not agree (a difference must prove stable) and at the first few points (a true but
+    # tiny difference, below the first rung's tolerance, shows at every point of the domain).
+    rows = []  # per point: the rungs evaluated, each (pv, dv, diff, mag)
     early = False
     for i_pt, pt in enumerate(pts):
-        if i_pt >= 6 and _refuted_already(rows, opts):
+        if i_pt >= opts.early_stop_after and _refuted_already(rows, opts):
             early = True  # a refutation stands; further points would only cost time
             break
-        row = []
-        for dps in opts.ladder:
-            try:
-                with mpmath.workdps(dps):
-                    vals = [bridge.mp_value(pt[a], dps) for a in args]
-                    pv, dv = +fp(*vals), fd(pt, dps)
-                    mag = max(abs(pv), abs(dv))
-                    if fs is not None:
-                        mag = max(mag, abs(+fs(*vals)))
-                    diff = abs(pv - dv)
-                    if not (mpmath.isfinite(diff) and mpmath.isfinite(mag)):
-                        raise ValueError("not finite")
-                row.append((pv, dv, diff, mag))
-            except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
-                row = None
-                break
-        if row is not None:
-            rows.append((pt, row))
+        try:
+            row = [rung(pt, opts.ladder[0])]
+            pv, dv, diff, mag = row[0]
+            if i_pt < opts.confirm_points or not _agrees(diff, mag, opts.ladder[0], opts):
+                row += [rung(pt, dps) for dps in opts.ladder[1:]]
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
+            continue
+        rows.append((pt, row))
     if not early and len(rows) < max(3, (4 * len(pts) + 4) // 5):
         # a point where a side cannot be evaluated is not evidence of agreement: at most a
         # fifth of them may drop out
         return Inconclusive(Method.NONE, f"only {len(rows)} of {len(pts)} points could be evaluated")
     disagree, unstable = [], 0
-    for (kind, rel), (pt, row) in zip(_classify(rows, opts.ladder), rows):
+    for (kind, rel), (pt, row) in zip(_classify(rows, opts), rows):
         if kind == "disagree":
             disagree.append((rel, pt, row))
         elif kind == "unstable":
@@ -274,29 +289,37 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
         return Inconclusive(Method.NUMERIC, f"{unstable} of {n} points unstable under the precision ladder", n, ladder)
     counted = f"{n} of {len(pts)}" if n < len(pts) else f"{n}"
     vacuous = all(r[-1][3] == 0 for _, r in rows)
-    return Verified(Method.NUMERIC, f"agrees at {counted} points to {math.floor(0.6 * ladder[0])}+ digits"
+    confirmed = sum(len(r) == len(ladder) for _, r in rows)
+    return Verified(Method.NUMERIC, f"agrees at {counted} points to {math.floor(opts.agreement_exponent * ladder[0])}+ "
+                    f"digits ({confirmed} of them also at {ladder[-1]} digits)"
                     + (" (both sides vanish at every point)" if vacuous else ""), n, ladder)
 
 
-def _classify(rows, ladder) -> list[tuple[str, float]]:
+def _agrees(diff, ref, dps: int, opts: Options) -> bool:
+    return diff <= mpmath.mpf(10) ** (-opts.agreement_exponent * dps) * ref
+
+
+def _classify(rows, opts: Options) -> list[tuple[str, float]]:
     """Each point as ("agree" | "disagree" | "unstable", relative difference).  All in mpmath:
     values far beyond the double range (factorials, 2^(n²)) must not overflow to inf.
 
-    Agreement: |p − d| ≤ 10^(−0.6·dps)·scale on every rung.  A true difference: resolved on no
-    rung, and stable (within 1e-3) from rung to rung; anything else is noise of an
-    ill-conditioned evaluation.  The scale is max(|p|, |d|), floored at 1e-6 of the median.
+    Agreement: |p − d| ≤ 10^(−0.6·dps)·scale on every rung evaluated.  A true difference:
+    resolved on no rung, and stable (within ``opts.stable_within``) from the first rung to the
+    last; anything else is noise of an ill-conditioned evaluation.  The scale is max(|p|, |d|),
+    floored at ``opts.scale_floor`` of the median magnitude.
     """
+    ladder = opts.ladder
     mags = sorted((abs(r[-1][3]) for _, r in rows), key=lambda m: m)
-    floor = mags[len(mags) // 2] * mpmath.mpf("1e-6") if mags else mpmath.mpf(0)
+    floor = mags[len(mags) // 2] * mpmath.mpf(opts.scale_floor) if mags else mpmath.mpf(0)
     out = []
     for _, row in rows:
         refs = [max(mag, floor) or mpmath.mpf(1) for (_, _, _, mag) in row]
-        ok = [diff <= mpmath.mpf(10) ** (-0.6 * dps) * ref for (dps, (_, _, diff, _), ref) in zip(ladder, row, refs)]
+        ok = [_agrees(diff, ref, dps, opts) for (dps, (_, _, diff, _), ref) in zip(ladder, row, refs)]
         lo, hi = row[0][2], row[-1][2]
         rel = float(min(hi / refs[-1], mpmath.mpf(1e300)))
         if all(ok):
             out.append(("agree", rel))
-        elif not any(ok) and abs(lo - hi) <= mpmath.mpf("1e-3") * hi:
+        elif len(row) > 1 and not any(ok) and abs(lo - hi) <= mpmath.mpf(opts.stable_within) * hi:
             out.append(("disagree", rel))
         else:
             out.append(("unstable", rel))
@@ -304,8 +327,9 @@ def _classify(rows, ladder) -> list[tuple[str, float]]:
 
 
 def _refuted_already(rows, opts) -> bool:
-    """At least three points that already disagree for good."""
-    return len(rows) >= 6 and sum(k == "disagree" for k, _ in _classify(rows, opts.ladder)) >= 3
+    """Enough points that already disagree for good."""
+    return (len(rows) >= opts.early_stop_after
+            and sum(k == "disagree" for k, _ in _classify(rows, opts)) >= opts.early_stop_disagreements)
 
 
 def _witness(claim, p, d, pt, row, dps, opts, rel) -> Witness:
