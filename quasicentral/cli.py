@@ -456,7 +456,7 @@ def _report(args) -> int:
     if args.all:
         jobs = list(report.GOLDEN)
     else:
-        jobs = [(("handout",) if args.handout else ("report",), (args.lang,))]
+        jobs = [(report.HANDOUT_KINDS if args.handout else ("report",), (args.lang,))]
     outcomes = report.outcomes_for_all()
     docs: dict[str, str] = {}
     for kinds, langs in jobs:

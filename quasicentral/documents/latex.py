@@ -16,7 +16,7 @@ Rendering is separate from derivation (sympy's ``LatexPrinter`` subclassed, as
   balances ``\\left``/``\\right`` pairs that the print splits over lines, so that every entry
   compiles as printed.
 
->>> from quasicentral import symbols as S
+>>> from quasicentral.notation import symbols as S
 >>> paper_latex(S.rho**2 * S.D(S.psi))
 '\\\\varrho^{2} \\\\dot{\\\\psi}'
 >>> paper_latex(S.Fj(S.k, S.zeta))
@@ -48,8 +48,9 @@ SYMBOL_NAMES = {
     "y_p": "y", "dvphi": r"d\varphi", "dw": r"d\psi", "n_s": "n",
 }
 
-#: sympy functions defined by the derivations, by class name.
-NAMED_FUNCTIONS = {"pendulum_angle": r"\Phi", "pendulum_rate": r"\Psi"}
+#: sympy functions defined by the derivations, by class name -> LaTeX (a text adds its own: the
+#: ``[notation] functions`` of its report.toml, passed to the printer as ``function_names``).
+NAMED_FUNCTIONS: dict[str, str] = {}
 
 _DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
 
@@ -66,16 +67,23 @@ class PaperLatexPrinter(LatexPrinter):
     _default_settings = {**LatexPrinter._default_settings, "ln_notation": True, "fold_func_brackets": True,
                          "inv_trig_style": "full"}
 
+    def __init__(self, settings=None, names: dict[str, str] | None = None,
+                 function_names: dict[str, str] | None = None):
+        super().__init__(settings)
+        #: symbol name -> LaTeX (one overridable mapping: a text's symbol table may replace it)
+        self.names = SYMBOL_NAMES if names is None else names
+        self.function_names = {**FUNCTION_NAMES, **NAMED_FUNCTIONS, **(function_names or {})}
+
     # names
     def _print_Symbol(self, expr, style="plain"):
         from quasicentral.notation.bridge import is_jet
 
         if is_jet(expr):
             name, order = expr.name.rsplit("_t", 1)
-            base = FUNCTION_NAMES.get(name, self._deal_with_super_sub(name))
+            base = self.function_names.get(name, self._deal_with_super_sub(name))
             return self._dotted(base, int(order))
-        if expr.name in SYMBOL_NAMES:
-            return SYMBOL_NAMES[expr.name]
+        if expr.name in self.names:
+            return self.names[expr.name]
         return super()._print_Symbol(expr, style=style)
 
     def _dotted(self, base: str, order: int) -> str:
@@ -88,16 +96,16 @@ class PaperLatexPrinter(LatexPrinter):
     def _print_Function(self, expr, exp=None):
         if isinstance(expr, AppliedUndef):
             name = expr.func.__name__
-            base = FUNCTION_NAMES.get(name, self._deal_with_super_sub(name))
+            base = self.function_names.get(name, self._deal_with_super_sub(name))
             if expr.args == (S.t,):
                 return base if exp is None else f"{base}^{{{exp}}}"
             args = ", ".join(self._print(a) for a in expr.args)
             tex = f"{base}\\left({args}\\right)"
             return tex if exp is None else f"{tex}^{{{exp}}}"
         name = type(expr).__name__
-        if name in NAMED_FUNCTIONS:
+        if name in self.function_names and name not in FUNCTION_NAMES:
             args = ", ".join(self._print(a) for a in expr.args)
-            head = NAMED_FUNCTIONS[name] if exp is None else f"{NAMED_FUNCTIONS[name]}^{{{exp}}}"
+            head = self.function_names[name] if exp is None else f"{self.function_names[name]}^{{{exp}}}"
             return f"{head}\\left({args}\\right)"
         return super()._print_Function(expr, exp)
 
@@ -195,9 +203,34 @@ class PaperLatexPrinter(LatexPrinter):
         return self._incomplete("E", expr.args[0], expr.args[1], exp)
 
 
-def paper_latex(expr, **settings) -> str:
-    """``expr`` in the paper's notation (see :class:`PaperLatexPrinter`)."""
-    return PaperLatexPrinter(settings).doprint(expr)
+def paper_latex(expr, names: dict[str, str] | None = None, functions: dict[str, str] | None = None,
+                **settings) -> str:
+    """``expr`` in the paper's notation (see :class:`PaperLatexPrinter`); ``names`` replaces
+    the symbol -> LaTeX mapping :data:`SYMBOL_NAMES`, ``functions`` adds function names."""
+    return PaperLatexPrinter(settings, names=names, function_names=functions).doprint(expr)
+
+
+#: Letters with two forms in LaTeX: the printer follows the form a printed display uses.
+VARIANTS = (("rho", r"\varrho", r"\rho"), ("phi", r"\varphi", r"\phi"), ("vphi", r"\varphi", r"\phi"),
+            ("theta", r"\varphi", r"\theta"), ("epsilon", r"\varepsilon", r"\epsilon"))
+
+
+def names_as_printed(printed_latex: str, names: dict[str, str] | None = None) -> dict[str, str]:
+    r"""The symbol names of ``names`` (default :data:`SYMBOL_NAMES`) with each two-form letter
+    in the form that ``printed_latex`` uses (ρ stays ρ where the text prints ρ, ϱ stays ϱ).
+
+    >>> print(names_as_printed(r"\rho \frac{d\psi}{dt}")["rho"])
+    \rho
+    >>> print(names_as_printed(r"\varrho^2")["rho"])
+    \varrho
+    """
+    out = dict(SYMBOL_NAMES if names is None else names)
+    for sym, default, other in VARIANTS:
+        uses_other = re.search(re.escape(other) + r"(?![A-Za-z])", printed_latex)
+        uses_default = re.search(re.escape(default) + r"(?![A-Za-z])", printed_latex)
+        if uses_other and not uses_default and out.get(sym, default) == default:
+            out[sym] = other
+    return out
 
 
 _BREAK = "\x00"
@@ -284,8 +317,8 @@ class _BreakingPrinter(PaperLatexPrinter):
     """Marks the places where a long sum may be broken: before the + and − of a top-level sum
     and of a sum that is a factor of a top-level product (printed as coefficient × (sum))."""
 
-    def __init__(self, width: int):
-        super().__init__()
+    def __init__(self, width: int, names: dict[str, str] | None = None, functions: dict[str, str] | None = None):
+        super().__init__(names=names, function_names=functions)
         self._width = width
 
     def _long(self, expr) -> bool:
@@ -330,10 +363,11 @@ class _BreakingPrinter(PaperLatexPrinter):
         return head + r"\left(" + self._add_broken(big) + r"\right)"
 
 
-def broken_lines(expr, width: int = 70) -> list[str]:
+def broken_lines(expr, width: int = 70, names: dict[str, str] | None = None,
+                 functions: dict[str, str] | None = None) -> list[str]:
     """``expr`` in the paper's notation, broken into lines of about ``width`` glyphs; each line
     has its ``\\left``/``\\right`` pairs closed so that it typesets on its own."""
-    tex = _BreakingPrinter(width).breakable(expr)
+    tex = _BreakingPrinter(width, names, functions).breakable(expr)
     lines, cur = [], ""
     for seg in tex.split(_BREAK):
         if cur and visible_width(cur) + visible_width(seg) > width:
@@ -345,7 +379,8 @@ def broken_lines(expr, width: int = 70) -> list[str]:
     return [balance(line) for line in lines]
 
 
-def relation_lines(rel, width: int = 70) -> list[str]:
+def relation_lines(rel, width: int = 70, names: dict[str, str] | None = None,
+                   functions: dict[str, str] | None = None) -> list[str]:
     """A derived relation (``Eq``, expression, or a (symbol, value) pair of a model) as the rows
     of an ``aligned`` display: ``lhs &= …`` then ``&\\quad …``, broken where a long sum allows."""
     if isinstance(rel, tuple):
@@ -354,8 +389,8 @@ def relation_lines(rel, width: int = 70) -> list[str]:
         lhs, rhs, rel_sym = rel.lhs, rel.rhs, "="
     else:
         lhs, rhs, rel_sym = None, rel, ""
-    left = paper_latex(lhs) if lhs is not None else ""
-    lines = broken_lines(rhs, width)
+    left = paper_latex(lhs, names, functions) if lhs is not None else ""
+    lines = broken_lines(rhs, width, names, functions)
     out = [f"{left} &{rel_sym} {lines[0]}".strip()]
     out += [rf"&\quad {line}" for line in lines[1:]]
     return out
@@ -431,6 +466,8 @@ def _other(ch: str, math: bool) -> str:
         if math and (ch.isalnum() or ch in "+-=()[]/.,;:!?' *<>|"):
             return ch
         return TEXT_CHARS.get(ch, ch) if not math else (r"\text{" + TEXT_CHARS.get(ch, ch) + "}")
+    if ch in TEXT_CHARS:
+        return TEXT_CHARS[ch] if not math else r"\text{" + TEXT_CHARS[ch] + "}"
     if "\u00c0" <= ch <= "\u017f" and ch.isalpha() and ch not in "×÷":
         return ch if not math else r"\text{" + ch + "}"
     ascii_ = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
@@ -546,8 +583,8 @@ def text(s: str, letters: bool = True) -> str:
 def escape(s: str) -> str:
     r"""Plain text (identifiers, file names) with TeX's special characters escaped, no mathematics.
 
-    >>> print(escape("derivations.brepta1953_s2 {50%}"))
-    derivations.brepta1953\_s2 \{50\%\}
+    >>> print(escape("derivations.text_s2 {50%}"))
+    derivations.text\_s2 \{50\%\}
     """
     return "".join(TEXT_CHARS.get(ch, ch) if ch.isascii() else text(ch) for ch in s)
 
@@ -807,3 +844,44 @@ def wrap_row(row: str, width: int = 74) -> str:
     lines = [balance(line) for line in lines]
     return ("\\begin{aligned}\n&" + lines[0] + "".join(" \\\\\n&\\qquad " + line for line in lines[1:])
             + "\n\\end{aligned}")
+
+
+# --- prose of the derivations and errata, cleaned for a reader ------------------------------------
+_GREEK_WORDS = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "zeta": "ζ", "kappa": "κ",
+                "lambda": "λ", "rho": "ϱ", "psi": "ψ", "phi": "φ", "vphi": "φ", "Omega": "Ω",
+                "omega": "ω", "pi": "π", "theta": "θ", "tau": "τ"}
+#: Names of the machinery a reader does not need: what they stand for in the text's notation.
+CODE_NAMES = {"elliptic_k": "K", "elliptic_f": "F", "elliptic_e": "E", "Fj": "F", "Ej": "E", "Kc": "K",
+              "Ec": "E", "asin": "arcsin", "atan2": "arctg", "atan": "arctg", "sqrt": "√"}
+_SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_TEST_REFERENCE = re.compile(
+    r"\s*\((?:[^()]|\([^()]*\))*?(?:\btests?\b/|\btest_\w+|\w+\.py\b|\btests\)|\(tests\b)(?:[^()]|\([^()]*\))*\)"
+    r"|\s*\(tests?\)")
+_IDENT_IN_PARENS = re.compile(r"\s*\(\s*[A-Za-z]+_[A-Za-z0-9_]+\s*\)")
+
+
+def clean_prose(s: str) -> str:
+    """Prose written for programmers, made fit for a reader: references to tests and code
+    (``(tests/test_x.py)``, ``(legendre_antiderivative)``) dropped, the names of sympy's
+    functions replaced by the text's (``elliptic_k`` → K), Greek letters written out in ASCII
+    set as letters (``Omega t`` → Ωt), and the digit after a one-letter symbol made a
+    subscript (``R0`` → R₀, ``C1`` → C₁).
+
+    >>> clean_prose("R0 = v0 at Omega t = 2 pi (tests/test_a.py)")
+    'R₀ = v₀ at Ω t = 2 π'
+    >>> clean_prose("elliptic_k(m) (legendre_antiderivative) and phi0")
+    'K(m) and φ₀'
+    """
+    s = _TEST_REFERENCE.sub("", s)
+    s = _IDENT_IN_PARENS.sub("", s)
+    s = re.sub(r"\btests?/[\w/]+\.py\b", "the tests", s)
+    s = re.sub(r"\btest_\w+", "a test", s)
+    s = re.sub(r"\b(" + "|".join(sorted(CODE_NAMES, key=len, reverse=True)) + r")(?=\()",
+               lambda m: CODE_NAMES[m.group(1)], s)
+    s = re.sub(r"\b(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(\d?)\b",
+               lambda m: _GREEK_WORDS[m.group(1)] + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
+    s = re.sub(r"\bint_(\w)\^(\w+|\{[^{}]*\})", r"∫_\1^\2", s)
+    s = re.sub(r"\b(elliptic_[kfe]|Fj|Ej|Kc|Ec)\b", lambda m: CODE_NAMES[m.group(1)], s)
+    s = re.sub(r"(?<![A-Za-z0-9_.])([A-Za-zΑ-Ωα-ωϱφ])(\d)(?![A-Za-z0-9_(])",
+               lambda m: m.group(1) + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
+    return s
