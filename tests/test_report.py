@@ -48,7 +48,8 @@ REGENERATE = f"{report.REGENERATE}    (from the repository root, {REPO})"
     (S.D(S.x), r"\dot{x}"),
     (S.D(S.y, 2), r"\ddot{y}"),
     (S.rho**2 * S.D(S.psi), r"\varrho^{2} \dot{\psi}"),
-    (S.D(S.phi, 2) + S.phi, r"\varphi + \ddot{\varphi}"),
+    (S.D(S.phi, 2) + S.phi, r"\ddot{\varphi} + \varphi"),  # the highest derivative first
+    (S.D(S.rho, 2) - S.rho * S.D(S.psi) ** 2, r"\ddot{\varrho} - \varrho \dot{\psi}^{2}"),
     (S.Fj(S.k, S.zeta), r"F\left(k, \zeta\right)"),
     (S.Ej(S.k, S.zeta), r"E\left(k, \zeta\right)"),
     (S.Kc(S.k), "K"),

@@ -157,6 +157,14 @@ class PaperLatexPrinter(LatexPrinter):
             return rf"{self._print(expr)}\left({self._print(new[0])}\right)"
         return super()._print_Subs(subs)
 
+    # the order of a sum: the highest time derivative first, as a text writes an equation of
+    # motion (ϱ̈ − ϱψ̇², not −ϱψ̇² + ϱ̈); positive terms before negative ones; sympy's order else
+    def _as_ordered_terms(self, expr, order=None):
+        terms = super()._as_ordered_terms(expr, order=order)
+        if order not in (None, "lex") or self._settings.get("order") not in (None, "lex"):
+            return terms
+        return sorted(terms, key=lambda term: (-_time_order(term), term.could_extract_minus_sign()))
+
     # the paper's arccotg
     def _print_Add(self, expr, order=None):
         half_pi = sp.pi / 2
@@ -201,6 +209,20 @@ class PaperLatexPrinter(LatexPrinter):
         if len(expr.args) == 1:
             return self._complete("E", expr.args[0], exp)
         return self._incomplete("E", expr.args[0], expr.args[1], exp)
+
+
+def _time_order(expr) -> int:
+    """The highest order of a time derivative in ``expr`` (Derivative or jet symbol)."""
+    from quasicentral.notation.bridge import is_jet
+
+    best = 0
+    for d in expr.atoms(sp.Derivative):
+        if all(v == S.t for v, _ in d.variable_count):
+            best = max(best, d.derivative_count)
+    for sym in expr.free_symbols:
+        if isinstance(sym, sp.Symbol) and is_jet(sym):
+            best = max(best, int(sym.name.rsplit("_t", 1)[1]))
+    return best
 
 
 def paper_latex(expr, names: dict[str, str] | None = None, functions: dict[str, str] | None = None,
@@ -882,6 +904,9 @@ def clean_prose(s: str) -> str:
                lambda m: _GREEK_WORDS[m.group(1)] + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
     s = re.sub(r"\bint_(\w)\^(\w+|\{[^{}]*\})", r"∫_\1^\2", s)
     s = re.sub(r"\b(elliptic_[kfe]|Fj|Ej|Kc|Ec)\b", lambda m: CODE_NAMES[m.group(1)], s)
+    s = re.sub(r"\bdsolve of\b", "the solution of", s)
+    s = re.sub(r"\bdsolve\b", "solving", s)
+    s = re.sub(r"(?<![A-Za-z0-9_.])([A-Za-zα-ωϱφ])0(?=[A-Za-zα-ωΑ-Ω(√])", lambda m: m.group(1) + "₀", s)
     s = re.sub(r"(?<![A-Za-z0-9_.])([A-Za-zΑ-Ωα-ωϱφ])(\d)(?![A-Za-z0-9_(])",
                lambda m: m.group(1) + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
     return s

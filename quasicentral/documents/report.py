@@ -483,7 +483,7 @@ def same_as_printed(st: Step) -> bool:
 
 
 def _same_as_printed(st: Step) -> bool:
-    if st.result is None or st.is_erratum or (st.derivation and st.derivation.mode != "solve"):
+    if st.result is None or st.is_erratum or (st.derivation and st.derivation.mode not in ("solve", "expression")):
         return False
     try:
         printed = as_list(st.entry.printed)
@@ -757,8 +757,8 @@ def _errata_table(steps: list[Step], lang: str) -> str:
     out = [f"\\subsection*{{{W['errata_table']}}}\n"]
     if not errata:
         return "".join(out) + W["none_found"] + "\n\n"
-    out.append("{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.07\\linewidth}p{0.32\\linewidth}"
-               "p{0.34\\linewidth}>{\\raggedright\\arraybackslash}p{0.18\\linewidth}@{}}\n\\toprule\n"
+    out.append("{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.09\\linewidth}p{0.31\\linewidth}"
+               "p{0.33\\linewidth}>{\\raggedright\\arraybackslash}p{0.18\\linewidth}@{}}\n\\toprule\n"
                f"{W['table_eq']} & {W['table_printed']} & {W['table_corrected']} & {W['table_witness']} "
                "\\\\\n\\midrule\n\\endhead\n")
     for n, st in enumerate(errata):
