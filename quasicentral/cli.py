@@ -114,7 +114,8 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--out", default="reports", metavar="DIR", help="output directory (default reports)")
     rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk")
     rp.add_argument("--lang", choices=("en", "cs"), default="en", help="language (default en)")
-    rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
+    rp.add_argument("--handout", action="store_true",
+                    help="the teaching handouts instead of the report: the students' and the teacher's (with solutions)")
     rp.add_argument("--all", action="store_true",
                     help="every golden document: reports and handouts, English and Czech")
 

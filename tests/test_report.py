@@ -345,7 +345,8 @@ def english_phrases() -> list[str]:
         elif len(words) == 1 and len(words[0].strip(".,:")) >= 5:
             out.add(words[0].strip(".,:"))
     out |= {"sympy proves", "points disagree", "agrees at", "consistent", "anglicky", "Dimensions",
-            "As printed", "Re-derived", "Verdict", "Step", "Witness", "Exercise", "Solution"}
+            "As printed", "Re-derived", "Verdict", "Step", "Witness", "Exercise", "Solution", "the", "with",
+            "which", "from", "printed"}
     load_all()
     for d in REGISTRY.values():
         for m in re.finditer(r"\b(?:the|from|with|which|where|gives|since) [a-z]+ [a-z]+\b", d.doc):
@@ -459,6 +460,7 @@ def test_no_module_of_documents_names_a_shipped_text():
     ("R0 = v0 at Omega t = 2 pi (tests/test_a.py)", "R₀ = v₀ at Ω t = 2 π"),
     ("see test_sign_of_the_F_terms_is_right", "see a test"),
     ("elliptic_k(m) (legendre_antiderivative)", "K(m)"),
+    ("the suspicion 'exponents 3/4' and \"α = 0\", Newton's C'", "the suspicion ‘exponents 3/4’ and “α = 0”, Newton's C'"),
 ])
 def test_clean_prose(raw, clean):
     from quasicentral.documents.latex import clean_prose

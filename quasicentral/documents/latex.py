@@ -895,6 +895,8 @@ def clean_prose(s: str) -> str:
     'K(m) and φ₀'
     """
     s = _TEST_REFERENCE.sub("", s)
+    s = re.sub(r'"([^"]+)"', "\u201c\\1\u201d", s)  # straight quotes become typographic ones
+    s = re.sub(r"(?<![A-Za-z0-9])'([^'\n]+?)'(?![A-Za-z0-9])", "\u2018\\1\u2019", s)
     s = _IDENT_IN_PARENS.sub("", s)
     s = re.sub(r"\btests?/[\w/]+\.py\b", "the tests", s)
     s = re.sub(r"\btest_\w+", "a test", s)
