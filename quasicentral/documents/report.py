@@ -378,6 +378,11 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.6ex plus 0.3ex}
 \setlength{\LTpre}{0.5ex}
+%% compact headings of the entries
+\makeatletter
+\renewcommand\subsection{\@startsection{subsection}{2}{\z@}{-2.2ex plus -0.6ex minus -0.2ex}%%
+  {0.6ex plus 0.2ex}{\normalfont\large\bfseries}}
+\makeatother
 \setlength{\LTpost}{0.5ex}
 \hypersetup{pdftitle={%(pdftitle)s}, pdfauthor={%(pdfauthor)s}, pdfsubject={%(pdfsubject)s},
   pdflang={%(pdflang)s}, pdfcreator={quasicentral}}
@@ -819,7 +824,7 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
     elif st.error:
         out.append(" " + W["derivation_failed"] + "\n\n")
     elif same_as_printed(st):
-        out.append(" " + W["same_as_printed"] + "\n\n")
+        out.append(" " + W["same_as_printed"] + "\n")
     else:
         rows = derived_rows(st, prose=prose)
         if rows is None:
