@@ -557,3 +557,30 @@ def test_pdf_failure_is_exit_1_with_log(tmp_path, monkeypatch, capsys):
     code = main(["report", "--pdf", "--out", str(tmp_path)])
     err = capsys.readouterr().err
     assert code == 1 and err.count("\n") == 1 and "broken-report-en.log" in err, err
+
+
+def test_errata_with_one_cause_are_explained_once():
+    """Errata sharing a root cause (``[[cause]]`` in the errata data, ``Erratum.causes``) are
+    grouped under it: its title and note once, then the displays it affects; an erratum without
+    recorded causes is a group of its own."""
+    from types import SimpleNamespace as NS
+
+    from quasicentral.documents.prose import generic_prose
+    from quasicentral.engine.verdict import Method, Outcome, Refuted
+
+    entries = catalog.entries()[:3]
+    cause = NS(id="zeta-branch", title="The branch of the root", title_cs="Větev odmocniny", kind="range of validity",
+               note="Holds on the first half-period only.", note_cs="Platí jen na první půlperiodě.")
+
+    def step(e, causes):
+        err = NS(id=e.id, kind="range of validity", note="n", corrected_latex="x = 1", causes=causes)
+        return report.Step(e, Outcome(e.id, Refuted(Method.NUMERIC), "erratum", True), None, None, "none", err, None)
+
+    steps = [step(entries[0], (cause,)), step(entries[1], (cause,)), step(entries[2], ())]
+    groups = report.cause_groups(steps)
+    assert [len(g.steps) for g in groups] == [2, 1] and groups[0].recorded and not groups[1].recorded
+    by_id = {s.entry.id: s for s in steps}
+    for lang, title, note in (("en", "The branch of the root", "first half-period"), ("cs", "Větev odmocniny", "půlperiodě")):
+        tex = report._causes_section(groups, by_id, generic_prose("t"), lang)
+        assert tex.count(title) == 1 and tex.count(note) == 1
+        assert f"\\ref{{e:{steps[0].label}}}" in tex and f"\\ref{{e:{steps[1].label}}}" in tex

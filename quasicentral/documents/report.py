@@ -42,9 +42,8 @@ from quasicentral.documents.latex import (
 from quasicentral.documents.prose import KINDS_CS, LANGS, WORDS, TextProse, join_refs, prose_of
 from quasicentral.engine import catalog
 from quasicentral.engine import errata as errata_mod
-from quasicentral.engine import formats as output
 from quasicentral.engine.registry import REGISTRY, Derivation, as_list, derived, load_all
-from quasicentral.engine.verdict import Outcome, Verdict
+from quasicentral.engine.verdict import Outcome
 from quasicentral.files import write_atomic
 from quasicentral.studies import figures as figures_mod
 
