@@ -168,7 +168,8 @@ def build_parser() -> argparse.ArgumentParser:
     rp.add_argument("--out", default="reports", metavar="DIR", help="output directory, created if needed (default reports)")
     rp.add_argument("--pdf", action="store_true", help="also compile each document with latexmk (default: LaTeX only)")
     rp.add_argument("--lang", choices=("en", "cs"), default=None, help="language: en or cs (default en)")
-    rp.add_argument("--handout", action="store_true", help="a teaching handout instead of the report")
+    rp.add_argument("--handout", action="store_true",
+                    help="the teaching handouts instead of the report: the students' and the teacher's (with solutions)")
     rp.add_argument("--all", action="store_true",
                     help="every golden document: reports and handouts, English and Czech")
     _add_text_options(rp, source=False)
@@ -875,7 +876,7 @@ def _report(args) -> int:
     if args.all:
         jobs = list(report.GOLDEN)
     else:
-        jobs = [(("handout",) if args.handout else ("report",), (args.lang or "en",))]
+        jobs = [(report.HANDOUT_KINDS if args.handout else ("report",), (args.lang or "en",))]
     t0 = time.perf_counter()
     with ProgressBar(args, "report") as bar:
         outcomes = report.outcomes_for_all(progress=bar)

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import difflib
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -46,7 +47,8 @@ REGENERATE = f"{report.REGENERATE}    (from the repository root, {REPO})"
     (S.D(S.x), r"\dot{x}"),
     (S.D(S.y, 2), r"\ddot{y}"),
     (S.rho**2 * S.D(S.psi), r"\varrho^{2} \dot{\psi}"),
-    (S.D(S.phi, 2) + S.phi, r"\varphi + \ddot{\varphi}"),
+    (S.D(S.phi, 2) + S.phi, r"\ddot{\varphi} + \varphi"),  # the highest derivative first
+    (S.D(S.rho, 2) - S.rho * S.D(S.psi) ** 2, r"\ddot{\varrho} - \varrho \dot{\psi}^{2}"),
     (S.Fj(S.k, S.zeta), r"F\left(k, \zeta\right)"),
     (S.Ej(S.k, S.zeta), r"E\left(k, \zeta\right)"),
     (S.Kc(S.k), "K"),
@@ -236,29 +238,252 @@ def test_every_figure_is_included(generated):
     assert names == {f.name for t in texts.active() for f in figures.of_text(t)}
 
 
-# --- compiling: every report and handout, to PDF, pages not blank -------------------------------
-@pytest.mark.skipif(shutil.which("latexmk") is None or shutil.which("pdftoppm") is None,
-                    reason="needs latexmk and pdftoppm (./setup.sh installs them)")
-def test_every_document_compiles(generated, tmp_path):
+# --- compiling: every document once per test run, then the done-when checks on the PDFs ---------
+pytestmark_latex = pytest.mark.skipif(
+    shutil.which("latexmk") is None or shutil.which("pdftotext") is None or shutil.which("pdftoppm") is None,
+    reason="needs latexmk, pdftotext and pdftoppm (./setup.sh installs them)")
+
+
+@pytest.fixture(scope="module")
+def compiled(generated, tmp_path_factory):
+    """Every report and handout compiled once (latexmk, in parallel); name -> (pdf, log text,
+    pdftotext of the PDF, pdftotext of page 1)."""
+    if shutil.which("latexmk") is None or shutil.which("pdftotext") is None:
+        pytest.skip("needs latexmk and pdftotext (./setup.sh installs them)")
+    src, docs = generated
+    out = tmp_path_factory.mktemp("pdf")
+    shutil.copytree(src, out, dirs_exist_ok=True)
+    names = [n for n in docs if n != report.VERSIONS_FILE]
+    t0 = time.perf_counter()
+    pdfs = report.compile_all(out, names)
+    print(f"\ncompiled {len(pdfs)} documents in {time.perf_counter() - t0:.1f} s")
+    result = {}
+    for name, pdf in zip(names, pdfs):
+        log = pdf.with_suffix(".log").read_text(encoding="utf-8", errors="replace")
+        full = subprocess.run(["pdftotext", "-enc", "UTF-8", str(pdf), "-"], capture_output=True, text=True,
+                              check=True).stdout
+        first = subprocess.run(["pdftotext", "-enc", "UTF-8", "-f", "1", "-l", "1", str(pdf), "-"],
+                               capture_output=True, text=True, check=True).stdout
+        result[name] = (pdf, log, full, first)
+    return result
+
+
+def _flat(s: str) -> str:
+    """Text of a PDF with hyphenation at line ends undone and all white space single spaces."""
+    return " ".join(re.sub(r"-\n(?=[a-zá-ž])", "", s).split())
+
+
+@pytestmark_latex
+def test_every_document_compiles(compiled, tmp_path):
     """latexmk builds every report and handout without a LaTeX error or undefined reference,
     and the first page of each PDF has ink on it."""
     import matplotlib.image as mpimg
 
-    src, docs = generated
-    shutil.copytree(src, tmp_path, dirs_exist_ok=True)
-    names = [n for n in docs if n != report.VERSIONS_FILE]
-    t0 = time.perf_counter()
-    pdfs = report.compile_all(tmp_path, names)
-    seconds = time.perf_counter() - t0
-    print(f"\ncompiled {len(pdfs)} documents in {seconds:.1f} s")
-    for pdf in pdfs:
+    for name, (pdf, _, _, _) in compiled.items():
         assert pdf.is_file() and pdf.stat().st_size > 10_000, pdf
-        png_base = tmp_path / pdf.stem
-        subprocess.run(["pdftoppm", "-png", "-r", "40", "-f", "1", "-l", "1", str(pdf), str(png_base)], check=True)
+        subprocess.run(["pdftoppm", "-png", "-r", "40", "-f", "1", "-l", "1", str(pdf), str(tmp_path / pdf.stem)],
+                       check=True)
         (png,) = tmp_path.glob(pdf.stem + "-*.png")
         img = mpimg.imread(png)
         ink = (img[..., :3].min(axis=-1) < 0.8).mean()
         assert ink > 0.005, f"{pdf.name}: first page looks blank ({ink:.4f} of the pixels inked)"
+
+
+@pytestmark_latex
+def test_logs_have_no_overfull_box_and_no_warning(compiled):
+    bad = {}
+    for name, (_, log, _, _) in compiled.items():
+        found = [line for line in log.splitlines() if "Overfull" in line or "Warning" in line]
+        if found:
+            bad[name] = found[:5]
+    assert not bad, bad
+
+
+#: What must never reach a reader: code, raw LaTeX, code points.
+RAW_MARKERS = ("**", "Symbol(", ".subs(", "\\left", "\\right", "\\frac", "[U+", "Eq(", "Derivative(",
+               "tests/", ".py", "sympy.", "'\\", "mode=")
+_IDENTIFIER = re.compile(r"\b[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]+\b")
+
+
+@pytestmark_latex
+def test_pdfs_hold_no_raw_code(compiled):
+    bad = {}
+    for name, (_, _, full, _) in compiled.items():
+        found = [m for m in RAW_MARKERS if m in full] + _IDENTIFIER.findall(full)
+        if found:
+            bad[name] = sorted(set(found))[:10]
+    assert not bad, bad
+
+
+def english_phrases() -> list[str]:
+    """Every English sentence or label the documents can emit (report.WORDS, the verdict details
+    of the checker, the prose of the derivations and the errata), as plain text to look for."""
+    from quasicentral.documents.prose import WORDS
+
+    from quasicentral.engine.registry import REGISTRY, load_all
+
+    def strings(v):
+        if isinstance(v, str):
+            yield v
+        elif isinstance(v, dict):
+            for x in v.values():
+                yield from strings(x)
+        elif isinstance(v, (list, tuple)):
+            for x in v:
+                yield from strings(x)
+
+    cs = set(strings(WORDS["cs"]))
+    out = set()
+    for s in strings(WORDS["en"]):
+        if s in cs or s.startswith("^"):
+            continue
+        words = re.sub(r"\{[^{}]*\}", " ", report.plain(s)).split()
+        words = [w for w in words if re.fullmatch(r"[A-Za-z'’,.:;()-]+", w)]
+        if len(words) >= 3:
+            out.add(" ".join(words[:3]))
+        elif len(words) == 1 and len(words[0].strip(".,:")) >= 5:
+            out.add(words[0].strip(".,:"))
+    out |= {"sympy proves", "points disagree", "agrees at", "consistent", "anglicky", "Dimensions",
+            "As printed", "Re-derived", "Verdict", "Step", "Witness", "Exercise", "Solution", "the", "with",
+            "which", "from", "printed"}
+    load_all()
+    for d in REGISTRY.values():
+        for m in re.finditer(r"\b(?:the|from|with|which|where|gives|since) [a-z]+ [a-z]+\b", d.doc):
+            out.add(m.group(0))
+    return sorted(out)
+
+
+@pytestmark_latex
+def test_czech_documents_hold_no_english(compiled):
+    phrases = english_phrases()
+    assert len(phrases) > 50
+    bad = {}
+    for name, (_, _, full, _) in compiled.items():
+        if not name.endswith("-cs.tex"):
+            continue
+        flat = _flat(full)
+        found = [p for p in phrases if re.search(r"(?<![A-Za-zá-žÁ-Ž])" + re.escape(p) + r"(?![A-Za-zá-ž])", flat)]
+        if found:
+            bad[name] = found[:15]
+    assert not bad, bad
+
+
+@pytestmark_latex
+def test_page_one_of_a_report_has_the_summary_and_the_errata_table(compiled):
+    from quasicentral.documents.prose import WORDS
+
+    for name, (_, _, _, first) in compiled.items():
+        if "-report-" not in name:
+            continue
+        W = WORDS[name[-6:-4]]
+        flat = _flat(first)
+        for key in ("summary", "count_checked", "count_errata", "errata_table"):
+            assert report.plain(W[key]) in flat, (name, key)
+        assert report.plain(W["table_printed"]) in flat and report.plain(W["table_corrected"]) in flat, name
+
+
+def _counts(tex: str) -> tuple[int, ...]:
+    return tuple(tex.count(k) for k in ("\\section{", "\\subsection{", "\\subsection*{", "\\includegraphics",
+                                        "\\begin{equation}", "\\begin{center}", "\\item", "\\begin{landscape}"))
+
+
+def test_english_and_czech_documents_have_the_same_parts(generated):
+    _, docs = generated
+    for name, tex in docs.items():
+        if name.endswith("-en.tex"):
+            assert _counts(tex) == _counts(docs[name[:-7] + "-cs.tex"]), name
+
+
+def test_handouts_for_students_and_teachers(generated):
+    from quasicentral.documents.prose import WORDS
+
+    _, docs = generated
+    for name, tex in docs.items():
+        if name == report.VERSIONS_FILE:
+            continue
+        kind, lang = name.rsplit("-", 2)[1], name[-6:-4]
+        if kind not in ("handout", "teacher"):
+            continue
+        solutions = f"\\section{{{WORDS[lang]['solutions']}}}"
+        assert (solutions in tex) == (kind == "teacher"), name
+        assert "-report-" + lang + ".pdf" in tex and "-report-" + lang + ".tex" not in tex, name
+
+
+def test_pdf_metadata_is_set(generated):
+    _, docs = generated
+    for name, tex in docs.items():
+        if name == report.VERSIONS_FILE:
+            continue
+        lang = name[-6:-4]
+        assert f"pdflang={{{report.PDFLANG[lang]}}}" in tex, name
+        assert re.search(r"pdftitle=\{[^}]{20,}", tex) and "pdfauthor={quasicentral" in tex, name
+
+
+# --- a text's own prose --------------------------------------------------------------------------
+def test_a_text_without_report_toml_gets_generic_words(tmp_path):
+    from quasicentral.documents.prose import WORDS, load_prose
+
+    p = load_prose(tmp_path / "mytext", title="My text")
+    assert p.id == "mytext" and p.title == {"en": "My text", "cs": "My text"}
+    assert not p.figures and not p.sections and p.intro["cs"] and "lost" not in p.figures_intro["en"]
+    assert p.section_title("1", "en") is None and WORDS["en"]["report"]
+
+
+def test_report_toml_is_read(tmp_path):
+    from quasicentral.documents.prose import load_prose, prose_of
+
+    (tmp_path / "report.toml").write_text(
+        "[title]\nen = 'A'\ncs = 'B'\n[sections.\"1\".title]\nen = 'One'\ncs = 'Jedna'\n"
+        "[figures.f1]\nrole = 'study'\nlandscape = true\ncaption = {en = 'x', cs = 'y'}\n"
+        "[entries.\"t:1\"]\nstep = {cs = 'Krok.'}\n[notation.functions]\nmyfun = '\\Phi'\n", encoding="utf-8")
+    p = load_prose(tmp_path, "t")
+    assert p.title["cs"] == "B" and p.section_title("1", "cs") == "Jedna"
+    assert p.figure("f1").landscape and p.figure("f1").role == "study" and p.figure("f1").caption["cs"] == "y"
+    assert p.entry("t:1").step["cs"] == "Krok." and p.entry("t:2").step == {}
+    assert p.functions == {"myfun": "\\Phi"}
+
+    class Text:  # the lead's Text objects carry .root and .id
+        root, id, title = tmp_path, "t", "A"
+
+    assert prose_of(Text()).title["en"] == "A"
+
+
+def test_no_module_of_documents_names_a_shipped_text():
+    from quasicentral.engine import catalog
+
+    names = set(catalog.SOURCES)
+    for path in (REPO / "quasicentral" / "documents").glob("*.py"):
+        src = path.read_text(encoding="utf-8")
+        assert not [n for n in names if n in src], path.name
+
+
+@pytest.mark.parametrize("raw, clean", [
+    ("R0 = v0 at Omega t = 2 pi (tests/test_a.py)", "R₀ = v₀ at Ω t = 2 π"),
+    ("see test_sign_of_the_F_terms_is_right", "see a test"),
+    ("elliptic_k(m) (legendre_antiderivative)", "K(m)"),
+    ("the suspicion 'exponents 3/4' and \"α = 0\", Newton's C'", "the suspicion ‘exponents 3/4’ and “α = 0”, Newton's C'"),
+])
+def test_clean_prose(raw, clean):
+    from quasicentral.documents.latex import clean_prose
+
+    assert clean_prose(raw) == clean
+
+
+def test_dimension_messages_are_sentences():
+    msg = "inconsistent: adds [L/T] to [L] in -kappa*y(t) + x(t): term x(t)"
+    for lang in ("en", "cs"):
+        s = report.dimension_sentence(msg, lang)
+        assert "inconsistent" not in s and "*" not in s and "adds" not in s and s.endswith(".")
+    assert report.dimension_sentence("consistent", "cs") == ""
+
+
+def test_printer_names_are_one_overridable_mapping():
+    from quasicentral.documents.latex import PaperLatexPrinter, names_as_printed
+
+    assert PaperLatexPrinter(names={"rho": r"\rho"}).doprint(sp.Symbol("rho")) == r"\rho"
+    assert PaperLatexPrinter(function_names={"rho": r"\rho"}).doprint(S.rho) == r"\rho"
+    assert paper_latex(S.rho) == r"\varrho"
+    assert names_as_printed(r"\rho \frac{d\psi}{dt}")["rho"] == r"\rho"
 
 
 def test_latex_error_names_the_log(tmp_path):
@@ -333,3 +558,30 @@ def test_pdf_failure_is_exit_1_with_log(tmp_path, monkeypatch, capsys):
     code = main(["report", "--pdf", "--out", str(tmp_path)])
     err = capsys.readouterr().err
     assert code == 1 and err.count("\n") == 1 and "broken-report-en.log" in err, err
+
+
+def test_errata_with_one_cause_are_explained_once():
+    """Errata sharing a root cause (``[[cause]]`` in the errata data, ``Erratum.causes``) are
+    grouped under it: its title and note once, then the displays it affects; an erratum without
+    recorded causes is a group of its own."""
+    from types import SimpleNamespace as NS
+
+    from quasicentral.documents.prose import generic_prose
+    from quasicentral.engine.verdict import Method, Outcome, Refuted
+
+    entries = catalog.entries()[:3]
+    cause = NS(id="zeta-branch", title="The branch of the root", title_cs="Větev odmocniny", kind="range of validity",
+               note="Holds on the first half-period only.", note_cs="Platí jen na první půlperiodě.")
+
+    def step(e, causes):
+        err = NS(id=e.id, kind="range of validity", note="n", corrected_latex="x = 1", causes=causes)
+        return report.Step(e, Outcome(e.id, Refuted(Method.NUMERIC), "erratum", True), None, None, "none", err, None)
+
+    steps = [step(entries[0], (cause,)), step(entries[1], (cause,)), step(entries[2], ())]
+    groups = report.cause_groups(steps)
+    assert [len(g.steps) for g in groups] == [2, 1] and groups[0].recorded and not groups[1].recorded
+    by_id = {s.entry.id: s for s in steps}
+    for lang, title, note in (("en", "The branch of the root", "first half-period"), ("cs", "Větev odmocniny", "půlperiodě")):
+        tex = report._causes_section(groups, by_id, generic_prose("t"), lang)
+        assert tex.count(title) == 1 and tex.count(note) == 1
+        assert f"\\ref{{e:{steps[0].label}}}" in tex and f"\\ref{{e:{steps[1].label}}}" in tex

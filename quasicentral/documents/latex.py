@@ -16,10 +16,14 @@ Rendering is separate from derivation (sympy's ``LatexPrinter`` subclassed, as
   balances ``\\left``/``\\right`` pairs that the print splits over lines, so that every entry
   compiles as printed.
 
->>> from quasicentral import symbols as S
->>> paper_latex(S.rho**2 * S.D(S.psi))
+>>> import sympy as sp
+>>> from quasicentral.notation.symbols import D, Fj
+>>> t, k, zeta = sp.symbols("t k zeta")
+>>> rho, psi = sp.Function("rho")(t), sp.Function("psi")(t)
+>>> with using(Notation({"rho": r"\\varrho"}, {"rho": r"\\varrho"}, frozenset({t}), frozenset({t}))):
+...     paper_latex(rho**2 * D(psi))
 '\\\\varrho^{2} \\\\dot{\\\\psi}'
->>> paper_latex(S.Fj(S.k, S.zeta))
+>>> paper_latex(Fj(k, zeta))
 'F\\\\left(k, \\\\zeta\\\\right)'
 >>> text("ρ̈ − ρψ̇²")
 '\\\\ensuremath{\\\\ddot{\\\\varrho}} \\\\ensuremath{-} \\\\ensuremath{\\\\varrho \\\\dot{\\\\psi}^{2}}'
@@ -29,27 +33,59 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass, field
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.printing.latex import LatexPrinter
 
-from quasicentral.notation import symbols as S
+from quasicentral.notation.bridge import is_jet, jet_of
 
 # --- the printer ------------------------------------------------------------------------------
 
-#: Names of the motion's functions of t (and of their jets) in the paper's notation.
-FUNCTION_NAMES = {"x": "x", "y": "y", "rho": r"\varrho", "psi": r"\psi", "phi": r"\varphi", "s": "s", "v": "v"}
+@dataclass(frozen=True)
+class Notation:
+    """How a text writes its symbols: each name's LaTeX (its ``text.toml``), the variables whose
+    derivatives are Newton's dots (time), and the independent variables (a function of one of
+    them prints without its argument: ϱ, not ϱ(t))."""
 
-#: Symbols whose printed name differs from what sympy would write.
-SYMBOL_NAMES = {
-    "rho": r"\varrho", "phi": r"\varphi", "vphi": r"\varphi", "theta": r"\varphi", "w": r"\psi",
-    "K_1": "K", "L_1": "L", "M_1": "M", "N_1": "N", "k2": "k^{2}", "Cst": "C", "T_kin": "T",
-    "y_p": "y", "dvphi": r"d\varphi", "dw": r"d\psi", "n_s": "n",
-}
+    names: dict = field(default_factory=dict)  # symbol name -> LaTeX
+    functions: dict = field(default_factory=dict)  # function name -> LaTeX
+    dotted: frozenset = frozenset()
+    variables: frozenset = frozenset()
 
-#: sympy functions defined by the derivations, by class name.
-NAMED_FUNCTIONS = {"pendulum_angle": r"\Phi", "pendulum_rate": r"\Psi"}
+    @staticmethod
+    def of(table, symbols: dict | None = None, functions: dict | None = None) -> "Notation":
+        """The notation of a text's symbol table, with extra names (its report.toml)."""
+        names = {s.name: s.latex for s in table.specs if s.variable is None}
+        funcs = {s.name: s.latex for s in table.specs if s.variable is not None}
+        return Notation({**names, **(symbols or {})}, {**funcs, **(functions or {})}, table.dotted, table.variables)
+
+
+_NOTATION: ContextVar[Notation] = ContextVar("notation", default=Notation())
+
+
+@contextmanager
+def using(notation: Notation):
+    """Print in ``notation`` within the block (the documents of one text)."""
+    token = _NOTATION.set(notation)
+    try:
+        yield notation
+    finally:
+        _NOTATION.reset(token)
+
+
+def notation() -> Notation:
+    """The notation in force (see :func:`using`)."""
+    return _NOTATION.get()
+
+
+
+#: sympy functions defined by the derivations, by class name -> LaTeX (a text adds its own: the
+#: ``[notation] functions`` of its report.toml, passed to the printer as ``function_names``).
+NAMED_FUNCTIONS: dict[str, str] = {}
 
 _DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
 
@@ -66,51 +102,63 @@ class PaperLatexPrinter(LatexPrinter):
     _default_settings = {**LatexPrinter._default_settings, "ln_notation": True, "fold_func_brackets": True,
                          "inv_trig_style": "full"}
 
+    def __init__(self, settings=None, names: dict[str, str] | None = None,
+                 function_names: dict[str, str] | None = None, notation: Notation | None = None):
+        super().__init__(settings)
+        self.notation = notation if notation is not None else _NOTATION.get()
+        #: symbol name -> LaTeX (the text's, unless replaced)
+        self.names = {**self.notation.names} if names is None else names
+        self.function_names = {**self.notation.functions, **NAMED_FUNCTIONS, **(function_names or {})}
+
+    def _plain(self, f) -> bool:
+        """A function of one of the text's independent variables: printed without its argument."""
+        return isinstance(f, AppliedUndef) and len(f.args) == 1 and f.args[0] in self.notation.variables
+
     # names
     def _print_Symbol(self, expr, style="plain"):
-        from quasicentral.notation.bridge import is_jet
-
         if is_jet(expr):
-            name, order = expr.name.rsplit("_t", 1)
-            base = FUNCTION_NAMES.get(name, self._deal_with_super_sub(name))
-            return self._dotted(base, int(order))
-        if expr.name in SYMBOL_NAMES:
-            return SYMBOL_NAMES[expr.name]
+            f, order = jet_of(expr)
+            base = self.function_names.get(f.func.__name__, self._deal_with_super_sub(f.func.__name__))
+            return self._derivative_of(base, f.args[0], order)
+        if expr.name in self.names:
+            return self.names[expr.name]
         return super()._print_Symbol(expr, style=style)
 
-    def _dotted(self, base: str, order: int) -> str:
+    def _derivative_of(self, base: str, var, order: int) -> str:
         if order == 0:
             return base
-        if order in _DOTS:
-            return f"{_DOTS[order]}{{{base}}}"
-        return f"{base}^{{({order})}}"
+        if var in self.notation.dotted:
+            return f"{_DOTS[order]}{{{base}}}" if order in _DOTS else f"{base}^{{({order})}}"
+        v = self._print(var)
+        return (rf"\frac{{d{base}}}{{d{v}}}" if order == 1
+                else rf"\frac{{d^{{{order}}}{base}}}{{d{v}^{{{order}}}}}")
 
     def _print_Function(self, expr, exp=None):
         if isinstance(expr, AppliedUndef):
             name = expr.func.__name__
-            base = FUNCTION_NAMES.get(name, self._deal_with_super_sub(name))
-            if expr.args == (S.t,):
+            base = self.function_names.get(name, self._deal_with_super_sub(name))
+            if self._plain(expr):
                 return base if exp is None else f"{base}^{{{exp}}}"
             args = ", ".join(self._print(a) for a in expr.args)
             tex = f"{base}\\left({args}\\right)"
             return tex if exp is None else f"{tex}^{{{exp}}}"
         name = type(expr).__name__
-        if name in NAMED_FUNCTIONS:
+        if name in self.function_names:
             args = ", ".join(self._print(a) for a in expr.args)
-            head = NAMED_FUNCTIONS[name] if exp is None else f"{NAMED_FUNCTIONS[name]}^{{{exp}}}"
+            head = self.function_names[name] if exp is None else f"{self.function_names[name]}^{{{exp}}}"
             return f"{head}\\left({args}\\right)"
         return super()._print_Function(expr, exp)
 
     def _needs_function_brackets(self, expr) -> bool:
         # cos φ, not cos(φ): a function of t prints as a single letter
-        if isinstance(expr, AppliedUndef) and expr.args == (S.t,):
+        if self._plain(expr):
             return False
         return super()._needs_function_brackets(expr)
 
     def _foldable(self, a) -> bool:
         """An argument that needs no brackets after an operator name: a symbol, a function of
         t, or a fraction (the paper writes ln A, arccotg (v0/R0ω)·…)."""
-        if isinstance(a, AppliedUndef) and a.args == (S.t,):
+        if self._plain(a):
             return True
         if isinstance(a, sp.Mul) and a.as_numer_denom()[1] != 1 and not a.could_extract_minus_sign():
             return True
@@ -131,23 +179,33 @@ class PaperLatexPrinter(LatexPrinter):
 
     # derivatives
     def _is_time_derivative(self, expr) -> bool:
-        return all(v == S.t for v, _ in expr.variable_count)
+        return all(v in self.notation.dotted for v, _ in expr.variable_count)
 
     def _print_Derivative(self, expr):
+        f, variables = expr.expr, {v for v, _ in expr.variable_count}
+        if self._plain(f) and variables == {f.args[0]}:
+            return self._derivative_of(self._print(f), f.args[0], expr.derivative_count)
         if not self._is_time_derivative(expr):
             return super()._print_Derivative(expr)
-        order = expr.derivative_count
-        f = expr.expr
-        if isinstance(f, AppliedUndef) and f.args == (S.t,):
-            return self._dotted(self._print(f), order)
-        op = r"\frac{d}{dt}" if order == 1 else rf"\frac{{d^{{{order}}}}}{{dt^{{{order}}}}}"
+        order, (var,) = expr.derivative_count, variables
+        v = self._print(var)
+        op = rf"\frac{{d}}{{d{v}}}" if order == 1 else rf"\frac{{d^{{{order}}}}}{{d{v}^{{{order}}}}}"
         return rf"{op} \left[{self._print(f)}\right]"
 
     def _print_Subs(self, subs):
         expr, old, new = subs.args
-        if isinstance(expr, sp.Derivative) and tuple(old) == (S.t,) and self._is_time_derivative(expr):
+        if isinstance(expr, sp.Derivative) and len(old) == 1 and old[0] in self.notation.dotted \
+                and self._is_time_derivative(expr):
             return rf"{self._print(expr)}\left({self._print(new[0])}\right)"
         return super()._print_Subs(subs)
+
+    # the order of a sum: the highest time derivative first, as a text writes an equation of
+    # motion (ϱ̈ − ϱψ̇², not −ϱψ̇² + ϱ̈); positive terms before negative ones; sympy's order else
+    def _as_ordered_terms(self, expr, order=None):
+        terms = super()._as_ordered_terms(expr, order=order)
+        if order not in (None, "lex") or self._settings.get("order") not in (None, "lex"):
+            return terms
+        return sorted(terms, key=lambda term: (-_time_order(term, self.notation.dotted), term.could_extract_minus_sign()))
 
     # the paper's arccotg
     def _print_Add(self, expr, order=None):
@@ -165,16 +223,15 @@ class PaperLatexPrinter(LatexPrinter):
 
     # the paper's elliptic notation: modulus k, sine of the amplitude ζ
     def _modulus(self, m):
-        if m == S.k2:
-            return S.k
         if isinstance(m, sp.Pow) and m.exp == 2:
             return m.base
         return sp.sqrt(m)
 
     def _complete(self, letter: str, m, exp=None) -> str:
+        """K, E of the text's modulus (a single symbol: K, not K(k)); K(…) of another one."""
         k = self._modulus(m)
         head = letter if exp is None else f"{letter}^{{{exp}}}"
-        return head if k == S.k else rf"{head}\left({self._print(k)}\right)"
+        return head if isinstance(k, sp.Symbol) else rf"{head}\left({self._print(k)}\right)"
 
     def _incomplete(self, letter: str, phi, m, exp=None) -> str:
         if phi == sp.pi / 2:
@@ -195,9 +252,51 @@ class PaperLatexPrinter(LatexPrinter):
         return self._incomplete("E", expr.args[0], expr.args[1], exp)
 
 
-def paper_latex(expr, **settings) -> str:
-    """``expr`` in the paper's notation (see :class:`PaperLatexPrinter`)."""
-    return PaperLatexPrinter(settings).doprint(expr)
+def _time_order(expr, dotted) -> int:
+    """The highest order of a time derivative in ``expr`` (Derivative or jet symbol)."""
+    best = 0
+    for d in expr.atoms(sp.Derivative):
+        if all(v in dotted for v, _ in d.variable_count):
+            best = max(best, d.derivative_count)
+    for sym in expr.free_symbols:
+        if isinstance(sym, sp.Symbol) and is_jet(sym):
+            f, order = jet_of(sym)
+            if f.args[0] in dotted:
+                best = max(best, order)
+    return best
+
+
+def paper_latex(expr, names: dict[str, str] | None = None, functions: dict[str, str] | None = None,
+                **settings) -> str:
+    """``expr`` in the paper's notation (see :class:`PaperLatexPrinter`); ``names`` replaces
+    the symbol -> LaTeX mapping of the notation in force, ``functions`` adds function names."""
+    return PaperLatexPrinter(settings, names=names, function_names=functions).doprint(expr)
+
+
+#: Letters with two forms in LaTeX: the printer follows the form a printed display uses.
+VARIANTS = ((r"\varrho", r"\rho"), (r"\varphi", r"\phi"), (r"\vartheta", r"\theta"),
+            (r"\varepsilon", r"\epsilon"))
+
+
+def names_as_printed(printed_latex: str, names: dict[str, str] | None = None) -> dict[str, str]:
+    r"""The symbol names of ``names`` (default: the notation in force) with each two-form letter
+    in the form that ``printed_latex`` uses (ρ stays ρ where the text prints ρ, ϱ stays ϱ).
+
+    >>> print(names_as_printed(r"\rho \frac{d\psi}{dt}", {"rho": r"\varrho"})["rho"])
+    \rho
+    >>> print(names_as_printed(r"\varrho^2", {"rho": r"\varrho"})["rho"])
+    \varrho
+    """
+    out = dict(notation().names if names is None else names)
+    for one, other in VARIANTS:
+        uses_other = re.search(re.escape(other) + r"(?![A-Za-z])", printed_latex)
+        uses_one = re.search(re.escape(one) + r"(?![A-Za-z])", printed_latex)
+        for name, tex in out.items():
+            if uses_other and not uses_one and tex == one:
+                out[name] = other
+            elif uses_one and not uses_other and tex == other:
+                out[name] = one
+    return out
 
 
 _BREAK = "\x00"
@@ -284,8 +383,8 @@ class _BreakingPrinter(PaperLatexPrinter):
     """Marks the places where a long sum may be broken: before the + and − of a top-level sum
     and of a sum that is a factor of a top-level product (printed as coefficient × (sum))."""
 
-    def __init__(self, width: int):
-        super().__init__()
+    def __init__(self, width: int, names: dict[str, str] | None = None, functions: dict[str, str] | None = None):
+        super().__init__(names=names, function_names=functions)
         self._width = width
 
     def _long(self, expr) -> bool:
@@ -330,10 +429,11 @@ class _BreakingPrinter(PaperLatexPrinter):
         return head + r"\left(" + self._add_broken(big) + r"\right)"
 
 
-def broken_lines(expr, width: int = 70) -> list[str]:
+def broken_lines(expr, width: int = 70, names: dict[str, str] | None = None,
+                 functions: dict[str, str] | None = None) -> list[str]:
     """``expr`` in the paper's notation, broken into lines of about ``width`` glyphs; each line
     has its ``\\left``/``\\right`` pairs closed so that it typesets on its own."""
-    tex = _BreakingPrinter(width).breakable(expr)
+    tex = _BreakingPrinter(width, names, functions).breakable(expr)
     lines, cur = [], ""
     for seg in tex.split(_BREAK):
         if cur and visible_width(cur) + visible_width(seg) > width:
@@ -345,7 +445,8 @@ def broken_lines(expr, width: int = 70) -> list[str]:
     return [balance(line) for line in lines]
 
 
-def relation_lines(rel, width: int = 70) -> list[str]:
+def relation_lines(rel, width: int = 70, names: dict[str, str] | None = None,
+                   functions: dict[str, str] | None = None) -> list[str]:
     """A derived relation (``Eq``, expression, or a (symbol, value) pair of a model) as the rows
     of an ``aligned`` display: ``lhs &= …`` then ``&\\quad …``, broken where a long sum allows."""
     if isinstance(rel, tuple):
@@ -354,8 +455,8 @@ def relation_lines(rel, width: int = 70) -> list[str]:
         lhs, rhs, rel_sym = rel.lhs, rel.rhs, "="
     else:
         lhs, rhs, rel_sym = None, rel, ""
-    left = paper_latex(lhs) if lhs is not None else ""
-    lines = broken_lines(rhs, width)
+    left = paper_latex(lhs, names, functions) if lhs is not None else ""
+    lines = broken_lines(rhs, width, names, functions)
     out = [f"{left} &{rel_sym} {lines[0]}".strip()]
     out += [rf"&\quad {line}" for line in lines[1:]]
     return out
@@ -431,6 +532,8 @@ def _other(ch: str, math: bool) -> str:
         if math and (ch.isalnum() or ch in "+-=()[]/.,;:!?' *<>|"):
             return ch
         return TEXT_CHARS.get(ch, ch) if not math else (r"\text{" + TEXT_CHARS.get(ch, ch) + "}")
+    if ch in TEXT_CHARS:
+        return TEXT_CHARS[ch] if not math else r"\text{" + TEXT_CHARS[ch] + "}"
     if "\u00c0" <= ch <= "\u017f" and ch.isalpha() and ch not in "×÷":
         return ch if not math else r"\text{" + ch + "}"
     ascii_ = unicodedata.normalize("NFKD", ch).encode("ascii", "ignore").decode()
@@ -546,8 +649,8 @@ def text(s: str, letters: bool = True) -> str:
 def escape(s: str) -> str:
     r"""Plain text (identifiers, file names) with TeX's special characters escaped, no mathematics.
 
-    >>> print(escape("derivations.brepta1953_s2 {50%}"))
-    derivations.brepta1953\_s2 \{50\%\}
+    >>> print(escape("derivations.text_s2 {50%}"))
+    derivations.text\_s2 \{50\%\}
     """
     return "".join(TEXT_CHARS.get(ch, ch) if ch.isascii() else text(ch) for ch in s)
 
@@ -807,3 +910,49 @@ def wrap_row(row: str, width: int = 74) -> str:
     lines = [balance(line) for line in lines]
     return ("\\begin{aligned}\n&" + lines[0] + "".join(" \\\\\n&\\qquad " + line for line in lines[1:])
             + "\n\\end{aligned}")
+
+
+# --- prose of the derivations and errata, cleaned for a reader ------------------------------------
+_GREEK_WORDS = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "zeta": "ζ", "kappa": "κ",
+                "lambda": "λ", "rho": "ϱ", "psi": "ψ", "phi": "φ", "vphi": "φ", "Omega": "Ω",
+                "omega": "ω", "pi": "π", "theta": "θ", "tau": "τ"}
+#: Names of the machinery a reader does not need: what they stand for in the text's notation.
+CODE_NAMES = {"elliptic_k": "K", "elliptic_f": "F", "elliptic_e": "E", "Fj": "F", "Ej": "E", "Kc": "K",
+              "Ec": "E", "asin": "arcsin", "atan2": "arctg", "atan": "arctg", "sqrt": "√"}
+_SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_TEST_REFERENCE = re.compile(
+    r"\s*\((?:[^()]|\([^()]*\))*?(?:\btests?\b/|\btest_\w+|\w+\.py\b|\btests\)|\(tests\b)(?:[^()]|\([^()]*\))*\)"
+    r"|\s*\(tests?\)")
+_IDENT_IN_PARENS = re.compile(r"\s*\(\s*[A-Za-z]+_[A-Za-z0-9_]+\s*\)")
+
+
+def clean_prose(s: str) -> str:
+    """Prose written for programmers, made fit for a reader: references to tests and code
+    (``(tests/test_x.py)``, ``(legendre_antiderivative)``) dropped, the names of sympy's
+    functions replaced by the text's (``elliptic_k`` → K), Greek letters written out in ASCII
+    set as letters (``Omega t`` → Ωt), and the digit after a one-letter symbol made a
+    subscript (``R0`` → R₀, ``C1`` → C₁).
+
+    >>> clean_prose("R0 = v0 at Omega t = 2 pi (tests/test_a.py)")
+    'R₀ = v₀ at Ω t = 2 π'
+    >>> clean_prose("elliptic_k(m) (legendre_antiderivative) and phi0")
+    'K(m) and φ₀'
+    """
+    s = _TEST_REFERENCE.sub("", s)
+    s = re.sub(r'"([^"]+)"', "\u201c\\1\u201d", s)  # straight quotes become typographic ones
+    s = re.sub(r"(?<![A-Za-z0-9])'([^'\n]+?)'(?![A-Za-z0-9])", "\u2018\\1\u2019", s)
+    s = _IDENT_IN_PARENS.sub("", s)
+    s = re.sub(r"\btests?/[\w/]+\.py\b", "the tests", s)
+    s = re.sub(r"\btest_\w+", "a test", s)
+    s = re.sub(r"\b(" + "|".join(sorted(CODE_NAMES, key=len, reverse=True)) + r")(?=\()",
+               lambda m: CODE_NAMES[m.group(1)], s)
+    s = re.sub(r"\b(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(\d?)\b",
+               lambda m: _GREEK_WORDS[m.group(1)] + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
+    s = re.sub(r"\bint_(\w)\^(\w+|\{[^{}]*\})", r"∫_\1^\2", s)
+    s = re.sub(r"\b(elliptic_[kfe]|Fj|Ej|Kc|Ec)\b", lambda m: CODE_NAMES[m.group(1)], s)
+    s = re.sub(r"\bdsolve of\b", "the solution of", s)
+    s = re.sub(r"\bdsolve\b", "solving", s)
+    s = re.sub(r"(?<![A-Za-z0-9_.])([A-Za-zα-ωϱφ])0(?=[A-Za-zα-ωΑ-Ω(√])", lambda m: m.group(1) + "₀", s)
+    s = re.sub(r"(?<![A-Za-z0-9_.])([A-Za-zΑ-Ωα-ωϱφ])(\d)(?![A-Za-z0-9_(])",
+               lambda m: m.group(1) + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
+    return s

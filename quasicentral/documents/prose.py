@@ -9,143 +9,12 @@ Czech one-letter prepositions are tied to the next word with ``~`` as Czech typo
 
 from __future__ import annotations
 
+import tomllib
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+
 LANGS = ("en", "cs")
-
-#: Per text: title, subtitle of the report and of the handout, and the handout's introduction.
-TEXTS = {
-    "brepta1953": {
-        "en": {
-            "title": r"R.~Brepta (1953): Motion of a point in a resisting medium --- quasicentral motion",
-            "report": "Derivation and verification report",
-            "handout": "A handout for students",
-            "intro": (
-                r"A point of mass $m$ is pulled towards a fixed centre by a central force $S$ and "
-                r"slowed down by the drag $R$ of the medium.  Brepta first derives general laws for "
-                r"this \emph{quasicentral} motion, then applies them to the spherical pendulum at small "
-                r"swings: without drag, with the linear drag $R = 2\kappa m v$ and with the quadratic "
-                r"drag $R = m\beta v^2$.  Every equation below was derived again with sympy and compared "
-                r"with the print; where the print is wrong, the corrected form is shown and the printed "
-                r"one is quoted next to it.  Exercises are collected at the end, followed by their solutions."
-            ),
-        },
-        "cs": {
-            "title": r"R.~Brepta (1953): Pohyb bodu v~odporujícím prostředí --- quasicentrální pohyb",
-            "report": "Zpráva o~odvození a~ověření",
-            "handout": "Studijní text",
-            "intro": (
-                r"Na hmotný bod o~hmotnosti $m$ působí centrální síla $S$, která jej přitahuje "
-                r"k~pevnému středu, a~odpor prostředí $R$, který jej brzdí.  Brepta nejprve odvodí "
-                r"obecné zákony takového \emph{quasicentrálního} pohybu a~potom je použije na sférické "
-                r"kyvadlo při malých rozkyvech: bez odporu, s~lineárním odporem $R = 2\kappa m v$ "
-                r"a~s~kvadratickým odporem $R = m\beta v^2$.  Každý vztah jsme znovu odvodili "
-                r"v~programu sympy a~porovnali s~tiskem.  Kde je v~tisku chyba, uvádíme opravený tvar "
-                r"a~vytištěnou podobu připojujeme.  Na konci najdete cvičení a~za nimi jejich řešení."
-            ),
-        },
-    },
-    "pendulum": {
-        "en": {
-            "title": r"The exact period of the simple pendulum, eqs.~(49)--(66)",
-            "report": "Derivation and verification report",
-            "handout": "A handout for students",
-            "intro": (
-                r"The period of a simple pendulum of length $l$ does not depend on the amplitude only "
-                r"as long as the swings are small.  The text derives the period for any initial "
-                r"deflection $\varphi_0$: from the conservation of energy, by separating the variables, "
-                r"through the substitution $\sin\frac{\varphi}{2} = \sin\frac{\varphi_0}{2}\sin\psi$ "
-                r"that leads to the complete elliptic integral of the first kind, and finally by a "
-                r"series in $\sin^2\frac{\varphi_0}{2}$.  Every equation was derived again with sympy "
-                r"and compared with the print; corrected forms are shown where the print is wrong."
-            ),
-        },
-        "cs": {
-            "title": r"Přesné řešení matematického kyvadla, rovnice (49)--(66)",
-            "report": "Zpráva o~odvození a~ověření",
-            "handout": "Studijní text",
-            "intro": (
-                r"Perioda matematického kyvadla délky $l$ nezávisí na výchylce jen pro malé kyvy.  "
-                r"Text odvozuje periodu pro libovolnou počáteční výchylku $\varphi_0$: ze zákona "
-                r"zachování mechanické energie, separací proměnných, substitucí "
-                r"$\sin\frac{\varphi}{2} = \sin\frac{\varphi_0}{2}\sin\psi$, která vede na úplný "
-                r"eliptický integrál prvního druhu, a~nakonec rozvojem v~řadu podle "
-                r"$\sin^2\frac{\varphi_0}{2}$.  Každý vztah jsme znovu odvodili v~programu sympy "
-                r"a~porovnali s~tiskem; kde je tisk chybný, uvádíme opravený tvar."
-            ),
-        },
-    },
-}
-
-#: Per (text, section): the section's title and a short introduction for the handout.  The
-#: Czech titles are the printed ones.
-SECTIONS = {
-    ("brepta1953", "2"): {
-        "en": ("General relations", (
-            r"We write Newton's law in the polar coordinates $\varrho$, $\psi$.  The equation across "
-            r"the radius vector does not contain the central force $S$; it gives a law for the "
-            r"angular momentum $\varrho^2\dot\psi$ that holds whatever the law of the central force.  "
-            r"For the linear drag the angular momentum decays exponentially in time, for the "
-            r"quadratic drag exponentially in the arc length.")),
-        "cs": ("Obecné závislosti", (
-            r"Pohybové rovnice napíšeme v~polárních souřadnicích $\varrho$, $\psi$.  Rovnice ve směru "
-            r"kolmém k~průvodiči neobsahuje centrální sílu $S$; plyne z~ní zákon pro moment "
-            r"rychlosti $\varrho^2\dot\psi$, který platí pro libovolný zákon centrální síly.  Při "
-            r"lineárním odporu moment rychlosti klesá exponenciálně s~časem, při kvadratickém "
-            r"odporu exponenciálně s~dráhou.")),
-    },
-    ("brepta1953", "3"): {
-        "en": ("The spherical pendulum at small swings without drag", (
-            r"The pendulum of length $l$ is described by the angle $\varphi$ between the thread and "
-            r"the vertical and by the angle $\psi$ of the pendulum's plane.  For small swings we put "
-            r"$\sin\varphi \doteq \varphi$ and $\cos\varphi \doteq 1$.  Projected onto the tangent "
-            r"plane, the motion is a plane motion under a central force proportional to the "
-            r"distance: an ellipse, run through in the period $T = 2\pi\sqrt{l/g}$.")),
-        "cs": ("Sférické kyvadlo při malých rozkyvech v~neodporujícím prostředí", (
-            r"Kyvadlo délky $l$ popíšeme úhlem $\varphi$ mezi vláknem a~svislicí a~úhlem $\psi$, "
-            r"který udává polohu roviny kyvadla.  Pro malé výchylky klademe "
-            r"$\sin\varphi \doteq \varphi$ a~$\cos\varphi \doteq 1$.  Průmět pohybu do tečné roviny "
-            r"je pak rovinný pohyb pod centrální silou úměrnou vzdálenosti, tedy pohyb po elipse "
-            r"s~periodou $T = 2\pi\sqrt{l/g}$.")),
-    },
-    ("brepta1953", "4"): {
-        "en": (r"The spherical pendulum in a medium resisting with $R = 2\kappa m v$", (
-            r"With the linear drag it pays to use Cartesian coordinates: the two equations of motion "
-            r"separate into two damped oscillations with the same characteristic equation.  The "
-            r"constants of integration follow from the initial position and from an initial velocity "
-            r"perpendicular to the radius vector.  The limit of aperiodic motion, $\kappa = \Omega$, "
-            r"is solved separately.")),
-        "cs": (r"Sférické kyvadlo v~prostředí, které odporuje silou $R = 2\kappa m v$", (
-            r"Při lineárním odporu je výhodné použít pravoúhlé souřadnice: obě pohybové rovnice se "
-            r"rozpadnou na dvě rovnice tlumeného kmitání se stejnou charakteristickou rovnicí.  "
-            r"Integrační konstanty určíme z~počáteční polohy a~z~počáteční rychlosti kolmé "
-            r"k~průvodiči.  Zvlášť vyřešíme mez aperiodického pohybu, kdy $\kappa = \Omega$.")),
-    },
-    ("brepta1953", "5"): {
-        "en": (r"The spherical pendulum in a medium resisting with $R = m\beta v^2$", (
-            r"With the quadratic drag no second integral in closed form exists.  For a small "
-            r"$\beta$ the velocities of the motion without drag (the ellipse) are put into the drag "
-            r"force, and the resulting linear equations are solved by the variation of constants.  "
-            r"The integrals that appear are reduced to the elliptic integrals $F(k, \zeta)$ and "
-            r"$E(k, \zeta)$.  The conical pendulum, $R_0\Omega = v_0$, is a special case.")),
-        "cs": (r"Sférické kyvadlo v~prostředí, které odporuje silou $R = m\beta v^2$", (
-            r"Při kvadratickém odporu druhý integrál v~uzavřeném tvaru nenajdeme.  Pro malé $\beta$ "
-            r"dosadíme do odporové síly rychlosti pohybu v~ideálním prostředí (po elipse) a~vzniklé "
-            r"lineární rovnice řešíme metodou variace konstant.  Integrály, které přitom dostaneme, "
-            r"převedeme na eliptické integrály $F(k, \zeta)$ a~$E(k, \zeta)$.  Zvláštním případem je "
-            r"konické kyvadlo, kdy $R_0\Omega = v_0$.")),
-    },
-    ("pendulum", "exact-period"): {
-        "en": ("The exact solution of the simple pendulum", (
-            r"Energy conservation gives the angular velocity $\dot\varphi$ as a function of the angle.  "
-            r"Separating the variables and integrating from $0$ to $\varphi_0$ gives a quarter of "
-            r"the period.  The substitution (57) turns the integral into the complete elliptic "
-            r"integral $K$, whose series gives the corrections to the period of small swings.")),
-        "cs": ("Přesné řešení matematického kyvadla", (
-            r"Ze zákona zachování energie vyjádříme úhlovou rychlost $\dot\varphi$ jako funkci úhlu.  "
-            r"Separací proměnných a~integrací od $0$ do $\varphi_0$ dostaneme čtvrtinu periody.  "
-            r"Substituce (57) převede integrál na úplný eliptický integrál $K$; jeho rozvoj v~řadu "
-            r"dává opravy k~periodě malých kyvů.")),
-    },
-}
 
 #: Kinds of errata, in Czech.
 KINDS_CS = {
@@ -155,175 +24,259 @@ KINDS_CS = {
     "derivative order": "řád derivace", "parenthesis": "závorky", "coefficient": "koeficient",
 }
 
-#: Captions of the figures that the texts lost, per language (any other figure that
-#: quasicentral.figures offers is captioned by its own title).
-FIGURE_CAPTIONS = {
-    "en": {
-        "fig7a": r"Fig.~7a: the trajectory under linear drag, $\kappa = 0.4$~1/s, $\Omega = \sqrt{10}$~1/s, $R_0 = 0.1$~m, $v_0 = 0.1$~m/s.",
-        "fig7b": r"Fig.~7b: the same motion as the two damped oscillations $x(t)$ and $y(t)$.",
-        "fig8": r"Fig.~8: the limit of aperiodic motion, $\kappa = \Omega = \sqrt{10}$~1/s, $R_0 = 0.1$~m, $v_0 = 0.1$~m/s.",
-        "overdamped": r"The overdamped motion $\kappa = 2\Omega$ (not in the text).",
-        "fig32": r"Fig.~32: the ratio $T/T_0$ against the amplitude $\varphi_0$, with partial sums of the series (66).",
-    },
-    "cs": {
-        "fig7a": r"Obr.~7a: dráha při lineárním odporu, $\kappa = 0{,}4$~1/s, $\Omega = \sqrt{10}$~1/s, $R_0 = 0{,}1$~m, $v_0 = 0{,}1$~m/s.",
-        "fig7b": r"Obr.~7b: týž pohyb jako dvě tlumené kmitavé složky $x(t)$ a~$y(t)$.",
-        "fig8": r"Obr.~8: mez aperiodického pohybu, $\kappa = \Omega = \sqrt{10}$~1/s, $R_0 = 0{,}1$~m, $v_0 = 0{,}1$~m/s.",
-        "overdamped": r"Přetlumený pohyb, $\kappa = 2\Omega$ (v~článku není).",
-        "fig32": r"Obr.~32: poměr $T/T_0$ v~závislosti na výchylce $\varphi_0$ a~částečné součty řady (66).",
-    },
-}
-
 #: Sentences and labels, per language.  ``{refs}`` is a list of equation references.
 WORDS = {
     "en": {
         "and": "and",
+        "report": "Derivation and verification report",
+        "handout": "A handout for students",
+        "teacher": "A handout for students: teacher's edition with solutions",
         "start": "We start from",
         "states": ("The text continues with", "Next comes", "Further,"),
         "from_one": ("From {refs} we obtain", "From {refs} it follows that", "Then {refs} gives"),
         "from_many": ("Combining {refs} we obtain", "From {refs} together we get"),
-        "erratum": (r"The text prints this equation with an error ({kind}); the corrected form is "
-                    r"shown above.  As printed:"),
+        "erratum": r"The text prints this equation with an error ({kind}); the corrected form is shown above.  As printed:",
         "cleared": r"This step looks suspicious, but the check confirms it.",
         "unverified": r"This step has not been verified yet.",
         "exercises": "Exercises",
         "solutions": "Solutions",
         "figures": "Figures",
-        "ex_derive": "Starting from {refs}, derive equation {ref}:",
-        "ex_derive_one": "Starting from {refs}, derive equation {ref}:",
-        "ex_derive_none": "Derive equation {ref}:",
+        "text_figures": "Figures of the text",
+        "studies": "Numerical studies",
+        "studies_intro": (r"The charts compare ways of computing the closed forms (the time they take "
+                          r"against the digits they get right) and show where the text's approximations "
+                          r"hold; they are drawn from the measurements of \emph{quasicentral}."),
+        "ex_derive": "Starting from {refs}, derive equation {ref}.",
+        "ex_derive_one": "Starting from {refs}, derive equation {ref}.",
+        "ex_derive_none": "Derive equation {ref}.",
         "ex_errata": "The text prints equation {ref} as follows.  Find the error and correct it.",
-        "sol_step": "The step, as the derivation states it:",
-        "sol_result": "The result sympy obtains:",
+        "sol_derive": "From {refs} we obtain",
+        "sol_derive_none": "We obtain",
         "sol_corrected": "The correct form is",
-        "sol_kind": "Kind of error: {kind}.",
-        "sol_note": "Explanation:",
+        "sol_kind": "The error is of the kind: {kind}.",
         "exercise": "Exercise",
-        "figures_intro": (r"The figures of the text were lost in print; these are reproduced from the "
-                          r"closed forms with the parameters its captions give."),
-        "verified_by": (r"All equations of this handout were checked by \texttt{{quasicentral}}; the "
-                        r"report \texttt{{{report}.tex}} gives every verdict and its evidence."),
-        # report labels
+        "verified_by": (r"All equations of this handout were checked by \emph{{quasicentral}}; the "
+                        r"report {report} gives every verdict and its evidence."),
+        "teacher_note": r"This edition has the solutions of the exercises at its end; the students' edition has not.",
+        # the steps, when no words of the text's own say more
+        "step_from": {"solve": "It follows from {refs}.", "expression": "The expression follows from {refs}.",
+                      "condition": "The condition follows from {refs}.",
+                      "substitute": "It is checked by putting the solution {refs} into it."},
+        "step_none": {"solve": "A starting relation of the text.", "expression": "A starting expression of the text.",
+                      "condition": "A condition stated by the text.",
+                      "substitute": "It is checked on the solution of the text."},
+        # report
         "summary": "Summary",
-        "how_reached": "Verdicts reached",
-        "entries": "entries",
+        "checked": (r"This report checks the {n} equations of the text one by one.  Each was derived "
+                    r"again with the computer algebra system sympy from the equations it rests on, and "
+                    r"compared with the print: symbolically where sympy proves the difference zero, "
+                    r"otherwise numerically at points of the physical domain at 30 and 60 digits; every "
+                    r"error found is backed by a witness, a point at which the printed and the corrected "
+                    r"form differ, certified by ball arithmetic where it could be "
+                    r"(section~\ref{{sec:method}})."),
+        "count_checked": "Equations checked",
+        "section": "section",
+        "count_verified": "verified",
+        "count_errata": "errata",
+        "count_causes": "{n} causes",
+        "count_cause": "1 cause",
+        "count_cleared": "suspects cleared",
+        "count_inconclusive": "inconclusive or unexpected",
+        "how_reached": "of which",
+        "errata_table": "The errata, printed and corrected side by side",
+        "errata_more": r"Section~\ref{{sec:errata}} explains each cause once.",
         "printed": "As printed",
-        "derived": "As re-derived",
+        "derived": "Re-derived",
+        "same_as_printed": "the same relation as printed (sympy proves their difference zero).",
         "verdict": "Verdict",
         "step": "Step",
-        "uses": "Built on",
-        "nothing": "nothing (a starting point)",
-        "code": "Code",
-        "note": "Note",
+        "uses": "from",
+        "nothing": "a starting point of the text",
         "corrected": "Corrected",
-        "errata": "Errata",
+        "errata": "Errata and their causes",
+        "cause_affects": "Affects",
+        "cause_kind": "Kind",
+        "cause_of": "Cause",
         "cleared_title": "Cleared suspects",
         "suspicion": "Suspicion",
-        "evidence": "Evidence",
         "witness": "Witness",
         "versions": "Software used",
+        "method": "Method and evidence",
+        "method_text": (
+            r"\emph{Symbolically}: sympy simplifies the difference of the two sides of the printed "
+            r"relation, on the re-derived solution where the relation is checked on one, to zero.  "
+            r"Every symbolic proof is cross-checked numerically at the same points as below; where "
+            r"the numbers disagree with a proof, the numbers win.  \emph{Numerically}: both sides "
+            r"are evaluated at points drawn from the physical domain of the text (positive lengths, "
+            r"masses and times, the amplitudes the text allows) at 30 and then at 60 significant "
+            r"digits; a relation is verified when they agree to at least 18 digits at every point.  "
+            r"\emph{By ball arithmetic}: at the witness of an error, the two values are computed as "
+            r"intervals that are guaranteed to contain them; the error is \emph{certified} when the "
+            r"intervals do not overlap.  \emph{Dimensions}: every relation is also checked for "
+            r"dimensional consistency; a relation whose sides have different dimensions is refuted "
+            r"whatever the numbers say.  The table lists how each verdict was reached."),
+        "evidence_table": "Evidence for each equation",
+        "col_eq": "Eq.", "col_status": "Status", "col_method": "Method", "col_evidence": "Evidence",
         "no_derivation": "No derivation is registered for this entry yet.",
-        "derivation_failed": "The derivation failed:",
-        "identity": r"the printed relation is checked as an identity (no model is needed)",
-        "model": "The printed relation is checked on the derived model",
-        "condition": "The quantity that must vanish under the printed condition",
+        "derivation_failed": "The derivation failed with an error.",
+        "model": "checked on the solution",
+        "condition": "the quantity that must vanish under the printed condition:",
         "status": {"verified": "verified", "erratum": "erratum", "cleared": "cleared suspect",
                    "unexpected": "unexpected"},
         "verdicts": {"verified": "verified", "refuted": "refuted", "inconclusive": "inconclusive"},
         "methods": {"symbolic": "symbolically", "numeric": "numerically", "certified": "with ball arithmetic",
-                    "dimensional": "by dimensions", "none": "no method settled it"},
-        "points": "{n} in-domain points at {digits} digits",
-        "dimensions": "Dimensions: {d}.",
-        "certified_yes": "certified by ball arithmetic",
+                    "dimensional": "by dimensions", "none": "by no method"},
+        "see_cause": r"see~\ref{{{label}}}",
+        "certified_yes": "certified",
         "certified_no": "not certified",
-        "printed_value": "printed",
-        "derived_value": "derived",
         "at": "at",
-        "quantity": "quantity",
-        "problems": "Problems",
-        "corrected_form": "corrected form",
-        "table_eq": "Eq.", "table_kind": "Kind", "table_printed": "Printed form",
-        "table_corrected": "Corrected form", "table_witness": "Witness", "table_status": "Status",
+        "vs": "printed {p}, correct {c}",
+        "corrected_form": "The corrected form is",
+        "table_eq": "Eq.", "table_printed": "Printed", "table_corrected": "Corrected",
+        "table_witness": "Witness", "table_cert": "Cert.",
         "none_found": "None.",
-        "python": "Python",
-        "report_intro": (r"Each equation of the text is listed in the order of the paper: as printed "
-                         r"(the catalog's verbatim \LaTeX), as re-derived (sympy's result in the paper's "
-                         r"notation), the verdict and how it was reached, and the step that produces it."),
-        "figure_source": "Data",
+        "report_intro": (r"Each equation follows in the order of the text: as printed, as re-derived, the "
+                         r"verdict and the step that produces it."),
+        "equation": "Equation",
+        "relation": "Relation",
+        "dims_ok": "",
+        "dims_bad": "The dimensions do not match",
+        "dims_add": r"the term {term} has the dimension {a}, the rest of the sum {b}",
+        "dims_exp": r"the exponent {arg} has the dimension {a} instead of none",
+        "dims_limit": r"the limit {lim} of the integral has the dimension {a}, the variable of integration {b}",
+        "details": [
+            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits \(both sides vanish at every point\)$",
+             "sympy proves the difference zero; both sides vanish at all {0} points"),
+            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits$",
+             "sympy proves the difference zero; agrees at {0} points to {1} or more digits"),
+            (r"^agrees at (\d+) points to (\d+)\+ digits$", "agrees at {0} points to {1} or more digits"),
+            (r"^(\d+) of (\d+) points disagree \(largest relative difference ([0-9.e+-]+)\)$",
+             "{0} of {1} points disagree (largest relative difference {2})"),
+        ],
     },
     "cs": {
         "and": "a",
+        "report": "Zpráva o~odvození a~ověření",
+        "handout": "Studijní text",
+        "teacher": "Studijní text: vydání pro učitele s~řešením",
         "start": "Vyjdeme ze vztahu",
         "states": ("Dále platí", "Text pokračuje vztahem", "Dále máme"),
         "from_one": ("Z~rovnice {refs} dostaneme", "Z~rovnice {refs} plyne", "Odtud podle {refs} vychází"),
         "from_many": ("Z~rovnic {refs} dostaneme", "Spojením rovnic {refs} dostaneme"),
-        "erratum": (r"V~tisku je v~této rovnici chyba ({kind}); výše uvádíme opravený tvar.  "
-                    r"Vytištěno bylo:"),
+        "erratum": r"V~tisku je v~této rovnici chyba ({kind}); výše uvádíme opravený tvar.  Vytištěno bylo:",
         "cleared": r"Tento krok vypadá podezřele, ověření však potvrdilo, že je správný.",
         "unverified": r"Tento krok zatím nebyl ověřen.",
         "exercises": "Cvičení",
         "solutions": "Řešení",
         "figures": "Obrázky",
-        "ex_derive": "Z~rovnic {refs} odvoďte vztah {ref}:",
-        "ex_derive_one": "Z~rovnice {refs} odvoďte vztah {ref}:",
-        "ex_derive_none": "Odvoďte vztah {ref}:",
+        "text_figures": "Obrázky textu",
+        "studies": "Numerické studie",
+        "studies_intro": (r"Grafy porovnávají způsoby výpočtu uzavřených tvarů (potřebný čas proti počtu "
+                          r"správných číslic) a~ukazují, kde platí přiblížení textu; jsou sestrojeny "
+                          r"z~měření programu \emph{quasicentral}."),
+        "ex_derive": "Z~rovnic {refs} odvoďte vztah {ref}.",
+        "ex_derive_one": "Z~rovnice {refs} odvoďte vztah {ref}.",
+        "ex_derive_none": "Odvoďte vztah {ref}.",
         "ex_errata": "Rovnice {ref} je v~textu vytištěna takto.  Najděte chybu a~opravte ji.",
-        "sol_step": "Postup, jak jej popisuje odvození v~programu (anglicky):",
-        "sol_result": "Výsledek, který dává sympy:",
+        "sol_derive": "Z~{refs} dostaneme",
+        "sol_derive_none": "Dostaneme",
         "sol_corrected": "Správný tvar je",
         "sol_kind": "Druh chyby: {kind}.",
-        "sol_note": "Vysvětlení (anglicky):",
         "exercise": "Cvičení",
-        "figures_intro": (r"Obrázky se v~tisku nedochovaly; zde jsou znovu sestrojeny z~odvozených "
-                          r"vztahů s~parametry, které uvádějí jejich popisky."),
-        "verified_by": (r"Všechny vztahy tohoto textu ověřil program \texttt{{quasicentral}}; zpráva "
-                        r"\texttt{{{report}.tex}} uvádí každý verdikt i~jeho doklad."),
+        "verified_by": (r"Všechny vztahy tohoto textu ověřil program \emph{{quasicentral}}; zpráva "
+                        r"{report} uvádí každý verdikt i~jeho doklad."),
+        "teacher_note": r"Toto vydání má na konci řešení cvičení; vydání pro studenty je nemá.",
+        "step_from": {"solve": "Vztah plyne z~{refs}.", "expression": "Výraz dostaneme z~{refs}.",
+                      "condition": "Podmínka plyne z~{refs}.",
+                      "substitute": "Vztah ověříme dosazením řešení {refs}."},
+        "step_none": {"solve": "Výchozí vztah textu.", "expression": "Výchozí výraz textu.",
+                      "condition": "Podmínka, kterou text klade.",
+                      "substitute": "Vztah ověříme na řešení, které text uvádí."},
         "summary": "Přehled",
-        "how_reached": "Způsob ověření",
-        "entries": "vztahů",
-        "printed": "Jak je vytištěno",
+        "checked": (r"Tato zpráva ověřuje jednu po druhé všech {n} rovnic textu.  Každou jsme znovu "
+                    r"odvodili v~systému počítačové algebry sympy z~rovnic, na kterých stojí, a~porovnali "
+                    r"s~tiskem: symbolicky, kde sympy dokázal, že rozdíl je nulový, jinak numericky "
+                    r"v~bodech fyzikálního oboru na 30 a~60 platných číslic.  Každou nalezenou chybu "
+                    r"dokládá protipříklad, bod, ve kterém se vytištěný a~opravený tvar liší, a~kde to šlo, "
+                    r"je rozdíl potvrzen intervalovou aritmetikou (oddíl~\ref{{sec:method}})."),
+        "count_checked": "Ověřených rovnic",
+        "section": "oddíl",
+        "count_verified": "správně",
+        "count_errata": "tiskových chyb",
+        "count_causes": "příčin: {n}",
+        "count_cause": "jedna příčina",
+        "count_cleared": "vyvrácených podezření",
+        "count_inconclusive": "nerozhodnutých nebo neočekávaných",
+        "how_reached": "z~toho",
+        "errata_table": "Tiskové chyby: vytištěný a~opravený tvar vedle sebe",
+        "errata_more": r"Oddíl~\ref{{sec:errata}} vysvětluje každou příčinu jednou.",
+        "printed": "Vytištěno",
         "derived": "Znovu odvozeno",
+        "same_as_printed": "týž vztah jako v~tisku (sympy dokázal, že jejich rozdíl je nulový).",
         "verdict": "Verdikt",
         "step": "Krok",
-        "uses": "Vychází z~rovnic",
-        "nothing": "ničeho (výchozí vztah)",
-        "code": "Kód",
-        "note": "Poznámka",
+        "uses": "z",
+        "nothing": "výchozí vztah textu",
         "corrected": "Opraveno",
-        "errata": "Tiskové chyby",
+        "errata": "Tiskové chyby a~jejich příčiny",
+        "cause_affects": "Týká se rovnic",
+        "cause_kind": "Druh",
+        "cause_of": "Příčina",
         "cleared_title": "Vyvrácená podezření",
         "suspicion": "Podezření",
-        "evidence": "Doklad",
         "witness": "Protipříklad",
         "versions": "Použitý software",
+        "method": "Metoda a~doklady",
+        "method_text": (
+            r"\emph{Symbolicky}: sympy zjednoduší rozdíl obou stran vytištěného vztahu na nulu (kde se "
+            r"vztah ověřuje na odvozeném řešení, po dosazení tohoto řešení).  Každý symbolický důkaz "
+            r"je navíc zkontrolován numericky ve stejných bodech jako níže; kdyby čísla důkazu "
+            r"odporovala, platí čísla.  \emph{Numericky}: obě strany vyčíslíme v~bodech fyzikálního "
+            r"oboru textu (kladné délky, hmotnosti a~časy, výchylky, které text připouští) na 30 "
+            r"a~potom na 60 platných číslic; vztah je ověřen, shodují-li se v~každém bodě alespoň na "
+            r"18 číslic.  \emph{Intervalovou aritmetikou}: v~protipříkladu chyby spočteme obě hodnoty "
+            r"jako intervaly, které je zaručeně obsahují; chyba je \emph{potvrzena}, když se intervaly "
+            r"nepřekrývají.  \emph{Rozměry}: u~každého vztahu kontrolujeme i~rozměry; vztah, jehož "
+            r"strany mají různé rozměry, je vyvrácen bez ohledu na čísla.  Tabulka uvádí, jak byl "
+            r"získán každý verdikt."),
+        "evidence_table": "Doklady pro jednotlivé rovnice",
+        "col_eq": "Rovnice", "col_status": "Stav", "col_method": "Metoda", "col_evidence": "Doklad",
         "no_derivation": "Pro tento vztah zatím není zapsáno odvození.",
-        "derivation_failed": "Odvození selhalo:",
-        "identity": r"vytištěný vztah se ověřuje jako identita (bez modelu)",
-        "model": "Vytištěný vztah se ověřuje na odvozeném modelu",
-        "condition": "Veličina, která musí za vytištěné podmínky vymizet",
+        "derivation_failed": "Odvození skončilo chybou.",
+        "model": "ověřeno na řešení",
+        "condition": "veličina, která musí za vytištěné podmínky vymizet:",
         "status": {"verified": "ověřeno", "erratum": "tisková chyba", "cleared": "vyvrácené podezření",
                    "unexpected": "neočekávaný výsledek"},
         "verdicts": {"verified": "ověřeno", "refuted": "vyvráceno", "inconclusive": "nerozhodnuto"},
         "methods": {"symbolic": "symbolicky", "numeric": "numericky", "certified": "intervalovou aritmetikou",
                     "dimensional": "rozměrovou analýzou", "none": "žádnou metodou"},
-        "points": "v~{n} bodech oboru na {digits} platných číslic",
-        "dimensions": "Rozměry: {d}.",
-        "certified_yes": "potvrzeno intervalovou aritmetikou",
-        "certified_no": "nepotvrzeno intervalovou aritmetikou",
-        "printed_value": "vytištěno",
-        "derived_value": "odvozeno",
+        "see_cause": r"viz~\ref{{{label}}}",
+        "certified_yes": "potvrzeno",
+        "certified_no": "nepotvrzeno",
         "at": "v~bodě",
-        "quantity": "veličina",
-        "problems": "Problémy",
-        "corrected_form": "opravený tvar",
-        "table_eq": "Rovnice", "table_kind": "Druh", "table_printed": "Vytištěno",
-        "table_corrected": "Opraveno", "table_witness": "Protipříklad", "table_status": "Stav",
+        "vs": "vytištěno {p}, správně {c}",
+        "corrected_form": "Opravený tvar je",
+        "table_eq": "Rovnice", "table_printed": "Vytištěno", "table_corrected": "Opraveno",
+        "table_witness": "Protipříklad", "table_cert": "Potvrz.",
         "none_found": "Žádné.",
-        "python": "Python",
-        "report_intro": (r"Každý vztah textu uvádíme v~pořadí článku: jak je vytištěn (doslovný "
-                         r"\LaTeX{} z~katalogu), jak jej znovu odvodil sympy (v~označení článku), "
-                         r"verdikt a~způsob, jakým byl získán, a~krok odvození, který jej dává."),
-        "figure_source": "Data",
+        "report_intro": (r"Rovnice následují v~pořadí textu: jak jsou vytištěny, jak jsme je znovu "
+                         r"odvodili, verdikt a~krok, který je dává."),
+        "equation": "Rovnice",
+        "relation": "Vztah",
+        "dims_ok": "",
+        "dims_bad": "Rozměry nesouhlasí",
+        "dims_add": r"člen {term} má rozměr {a}, zbytek součtu {b}",
+        "dims_exp": r"exponent {arg} má rozměr {a}, a~ne žádný",
+        "dims_limit": r"mez {lim} integrálu má rozměr {a}, integrační proměnná {b}",
+        "details": [
+            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits \(both sides vanish at every point\)$",
+             "sympy dokázal, že rozdíl je nulový; obě strany vymizí ve všech {0} bodech"),
+            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits$",
+             "sympy dokázal, že rozdíl je nulový; shoda v~{0} bodech na {1} a~více číslic"),
+            (r"^agrees at (\d+) points to (\d+)\+ digits$", "shoda v~{0} bodech na {1} a~více číslic"),
+            (r"^(\d+) of (\d+) points disagree \(largest relative difference ([0-9.e+-]+)\)$",
+             "neshoda v~{0} z~{1} bodů (největší relativní rozdíl {2})"),
+        ],
     },
 }
 
@@ -334,3 +287,153 @@ def join_refs(refs: list[str], lang: str) -> str:
     if len(refs) <= 1:
         return "".join(refs)
     return ", ".join(refs[:-1]) + f" {word}~" + refs[-1]
+
+
+# --- a text's own prose: <text folder>/report.toml ----------------------------------------------
+@dataclass(frozen=True)
+class FigureProse:
+    """A figure a text's documents show: its caption per language, whether it is a figure of
+    the text (``role = "text"``, also in the handouts) or a chart of the toolkit's measurements
+    (``"study"``, reports only), and whether it needs a landscape page of its own."""
+
+    name: str
+    caption: dict[str, str]
+    role: str = "text"
+    landscape: bool = False
+
+
+@dataclass(frozen=True)
+class EntryProse:
+    """Words for one catalog entry, per language (each optional): a name for its heading, the
+    text of its step (replacing the derivation's docstring), a note for its erratum."""
+
+    name: dict[str, str] = field(default_factory=dict)
+    step: dict[str, str] = field(default_factory=dict)
+    erratum: dict[str, str] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class TextProse:
+    """Everything a text's documents say about that text in particular (all LaTeX).
+
+    Read from ``<text folder>/report.toml`` by :func:`load_prose`; a text without that file
+    gets :func:`generic_prose` (no sentence about lost figures, no section introductions)."""
+
+    id: str
+    title: dict[str, str]
+    intro: dict[str, str]
+    figures_intro: dict[str, str]
+    sections: dict[str, tuple[dict[str, str], dict[str, str]]]  # section -> (title, intro)
+    figures: tuple[FigureProse, ...] = ()
+    entries: dict[str, EntryProse] = field(default_factory=dict)
+    author: str = ""
+    #: the text's notation for the printer: symbol name -> LaTeX, function class name -> LaTeX
+    symbols: dict[str, str] = field(default_factory=dict)
+    functions: dict[str, str] = field(default_factory=dict)
+
+    def section_title(self, section: str, lang: str) -> str | None:
+        got = self.sections.get(section)
+        return got[0].get(lang) if got else None
+
+    def section_intro(self, section: str, lang: str) -> str:
+        got = self.sections.get(section)
+        return got[1].get(lang, "") if got else ""
+
+    def figure(self, name: str) -> FigureProse | None:
+        return next((f for f in self.figures if f.name == name), None)
+
+    def entry(self, eid: str) -> EntryProse:
+        return self.entries.get(eid) or EntryProse()
+
+
+#: What a text without report.toml is called and told with.
+GENERIC = {
+    "intro": {
+        "en": (r"Every equation of the text was derived again with sympy and compared with the print; "
+               r"where the print is wrong, the corrected form is shown and the printed one is quoted "
+               r"next to it."),
+        "cs": (r"Každý vztah textu jsme znovu odvodili v~programu sympy a~porovnali s~tiskem; kde je "
+               r"v~tisku chyba, uvádíme opravený tvar a~vytištěnou podobu připojujeme."),
+    },
+    "figures_intro": {
+        "en": r"The figures are drawn from the derived closed forms and from the toolkit's measurements.",
+        "cs": r"Obrázky jsou sestrojeny z~odvozených vztahů a~z~měření, která provedl program.",
+    },
+}
+
+
+def _lang_table(raw, where: str) -> dict[str, str]:
+    if raw is None:
+        return {}
+    if isinstance(raw, str):
+        return {lang: raw for lang in LANGS}
+    if not isinstance(raw, dict) or not all(isinstance(v, str) for v in raw.values()):
+        raise ValueError(f"{where}: expected a table of strings per language (en, cs)")
+    return {k: " ".join(v.split()) if "\n" not in v.strip() else v.strip() for k, v in raw.items()}
+
+
+def generic_prose(text_id: str, title: str | None = None) -> TextProse:
+    """The prose of a text that brings no report.toml: its title (or its id) and generic words."""
+    name = title or text_id
+    return TextProse(text_id, {lang: name for lang in LANGS}, dict(GENERIC["intro"]),
+                     dict(GENERIC["figures_intro"]), {})
+
+
+def load_prose(root: Path, text_id: str | None = None, title: str | None = None) -> TextProse:
+    """The prose of the text whose folder is ``root``: ``root / "report.toml"`` when it exists,
+    else :func:`generic_prose`.  ``text_id`` defaults to the folder's name."""
+    text_id = text_id or Path(root).name
+    path = Path(root) / REPORT_FILE
+    if not path.is_file():
+        return generic_prose(text_id, title)
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    where = f"{text_id}/{REPORT_FILE}"
+    base = generic_prose(text_id, title)
+    sections = {str(k): (_lang_table(v.get("title"), f"{where}: sections.{k}.title"),
+                         _lang_table(v.get("intro"), f"{where}: sections.{k}.intro"))
+                for k, v in data.get("sections", {}).items()}
+    figures = tuple(FigureProse(str(k), _lang_table(v.get("caption"), f"{where}: figures.{k}"),
+                                str(v.get("role", "text")), bool(v.get("landscape", False)))
+                    for k, v in data.get("figures", {}).items())
+    bad = [f.name for f in figures if f.role not in ("text", "study")]
+    if bad:
+        raise ValueError(f"{where}: figures {', '.join(bad)}: role is 'text' or 'study'")
+    entries = {str(k): EntryProse(_lang_table(v.get("name"), f"{where}: entries.{k}.name"),
+                                  _lang_table(v.get("step"), f"{where}: entries.{k}.step"),
+                                  _lang_table(v.get("erratum"), f"{where}: entries.{k}.erratum"))
+               for k, v in data.get("entries", {}).items()}
+    return TextProse(
+        text_id,
+        _lang_table(data.get("title"), f"{where}: title") or base.title,
+        _lang_table(data.get("intro"), f"{where}: intro") or base.intro,
+        _lang_table(data.get("figures_intro"), f"{where}: figures_intro") or base.figures_intro,
+        sections, figures, entries, str(data.get("meta", {}).get("author", "")),
+        dict(data.get("notation", {}).get("symbols", {})), dict(data.get("notation", {}).get("functions", {})))
+
+
+REPORT_FILE = "report.toml"
+
+
+def text_root(text_id: str) -> Path:
+    """The folder of the loaded text ``text_id``."""
+    from quasicentral.engine import texts
+
+    return texts.get(text_id).root
+
+
+@lru_cache(maxsize=None)
+def _prose_cached(root: str, text_id: str, title: str | None) -> TextProse:
+    return load_prose(Path(root), text_id, title)
+
+
+def prose_of(text) -> TextProse:
+    """The prose of ``text``: a Text-like object (``.root``, ``.id``, optionally ``.title``),
+    a folder, or a shipped text's id."""
+    if isinstance(text, str):
+        from quasicentral.engine import texts
+
+        loaded = texts.get(text)
+        return _prose_cached(str(loaded.root), loaded.id, loaded.title)
+    if isinstance(text, Path):
+        return _prose_cached(str(text), text.name, None)
+    return _prose_cached(str(text.root), text.id, getattr(text, "title", None))
