@@ -33,9 +33,13 @@ from quasicentral import files
 
 
 from quasicentral.documents import report
-from quasicentral.notation import symbols as S
+from quasicentral.notation import bridge
+from quasicentral.notation.symbols import D, Ec, Ej, Fj, Kc, arccotg
 from quasicentral.cli import main
-from quasicentral.documents.latex import display_rows, escape, paper_latex, text, with_math
+from quasicentral.documents.latex import Notation, display_rows, escape, paper_latex, text, using, with_math
+
+S = texts.get("brepta1953").symbols  # the printer speaks a text's notation: here Brepta's
+P = texts.get("pendulum").symbols
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "reports"
@@ -44,30 +48,40 @@ REGENERATE = f"{report.REGENERATE}    (from the repository root, {REPO})"
 
 # --- the printer: the paper's notation --------------------------------------------------------
 @pytest.mark.parametrize("expr, expected", [
-    (S.D(S.x), r"\dot{x}"),
-    (S.D(S.y, 2), r"\ddot{y}"),
-    (S.rho**2 * S.D(S.psi), r"\varrho^{2} \dot{\psi}"),
-    (S.D(S.phi, 2) + S.phi, r"\ddot{\varphi} + \varphi"),  # the highest derivative first
-    (S.D(S.rho, 2) - S.rho * S.D(S.psi) ** 2, r"\ddot{\varrho} - \varrho \dot{\psi}^{2}"),
-    (S.Fj(S.k, S.zeta), r"F\left(k, \zeta\right)"),
-    (S.Ej(S.k, S.zeta), r"E\left(k, \zeta\right)"),
-    (S.Kc(S.k), "K"),
-    (S.Ec(S.k), "E"),
-    (sp.elliptic_k(sp.sin(S.phi0 / 2) ** 2), r"K\left(\sin {\frac{\varphi_{0}}{2}}\right)"),
-    (S.arccotg(S.x / S.y), r"\arccotg \frac{x}{y}"),
-    (sp.Symbol("phi_t1", real=True), r"\dot{\varphi}"),  # a jet of the checker
-    (sp.Subs(S.D(S.x), S.t, 0), r"\dot{x}\left(0\right)"),
+    (D(S.x), r"\dot{x}"),
+    (D(S.y, 2), r"\ddot{y}"),
+    (S.rho**2 * D(S.psi), r"\varrho^{2} \dot{\psi}"),
+    (D(S.phi, 2) + S.phi, r"\ddot{\varphi} + \varphi"),  # the highest derivative first
+    (D(S.rho, 2) - S.rho * D(S.psi) ** 2, r"\ddot{\varrho} - \varrho \dot{\psi}^{2}"),
+    (Fj(S.k, S.zeta), r"F\left(k, \zeta\right)"),
+    (Ej(S.k, S.zeta), r"E\left(k, \zeta\right)"),
+    (Kc(S.k), "K"),
+    (Ec(S.k), "E"),
+    (sp.elliptic_k(sp.sin(P.phi0 / 2) ** 2), r"K\left(\sin {\frac{\varphi_0}{2}}\right)"),
+    (arccotg(S.x / S.y), r"\arccotg \frac{x}{y}"),
+    (bridge.jet_symbol(S.phi, 1), r"\dot{\varphi}"),  # a jet of the checker
+    (sp.Subs(D(S.x), S.t, 0), r"\dot{x}\left(0\right)"),
     (sp.log(S.A), r"\ln A"),
-    (sp.log(S.rho**2 * S.D(S.psi)), r"\ln \left(\varrho^{2} \dot{\psi}\right)"),
+    (sp.log(S.rho**2 * D(S.psi)), r"\ln \left(\varrho^{2} \dot{\psi}\right)"),
+    (S.R0 * S.K1, r"K R_0"),  # the names the text declares
 ])
 def test_paper_notation(expr, expected):
-    assert paper_latex(expr) == expected
+    with using(Notation.of(P if expr.has(P.phi0) else S)):
+        assert paper_latex(expr) == expected
 
 
 def test_no_function_of_t_shows_its_argument():
-    expr = S.x * S.D(S.y) - S.y * S.D(S.x) + S.rho * S.D(S.psi, 2)
-    tex = paper_latex(expr)
+    expr = S.x * D(S.y) - S.y * D(S.x) + S.rho * D(S.psi, 2)
+    with using(Notation.of(S)):
+        tex = paper_latex(expr)
     assert "(t)" not in tex and r"\left(t \right)" not in tex and "frac{d}" not in tex
+
+
+def test_a_function_of_another_variable_has_leibniz_derivatives():
+    theta = sp.Symbol("theta", real=True)
+    u = sp.Function("u")(theta)
+    with using(Notation({"theta": r"\theta"}, {"u": "u"}, frozenset(), frozenset({theta}))):
+        assert paper_latex(D(u, 2) + u) == r"\frac{d^{2}u}{d\theta^{2}} + u"
 
 
 # --- the printed LaTeX: every entry can stand in one display --------------------------------
@@ -320,7 +334,7 @@ def english_phrases() -> list[str]:
     of the checker, the prose of the derivations and the errata), as plain text to look for."""
     from quasicentral.documents.prose import WORDS
 
-    from quasicentral.engine.registry import REGISTRY, load_all
+    from quasicentral.engine.registry import REGISTRY
 
     def strings(v):
         if isinstance(v, str):
@@ -346,7 +360,7 @@ def english_phrases() -> list[str]:
     out |= {"sympy proves", "points disagree", "agrees at", "consistent", "anglicky", "Dimensions",
             "As printed", "Re-derived", "Verdict", "Step", "Witness", "Exercise", "Solution", "the", "with",
             "which", "from", "printed"}
-    load_all()
+    texts.active()
     for d in REGISTRY.values():
         for m in re.finditer(r"\b(?:the|from|with|which|where|gives|since) [a-z]+ [a-z]+\b", d.doc):
             out.add(m.group(0))
@@ -449,9 +463,7 @@ def test_report_toml_is_read(tmp_path):
 
 
 def test_no_module_of_documents_names_a_shipped_text():
-    from quasicentral.engine import catalog
-
-    names = set(catalog.SOURCES)
+    names = {t.id for t in texts.shipped()}
     for path in (REPO / "quasicentral" / "documents").glob("*.py"):
         src = path.read_text(encoding="utf-8")
         assert not [n for n in names if n in src], path.name
@@ -481,9 +493,10 @@ def test_printer_names_are_one_overridable_mapping():
     from quasicentral.documents.latex import PaperLatexPrinter, names_as_printed
 
     assert PaperLatexPrinter(names={"rho": r"\rho"}).doprint(sp.Symbol("rho")) == r"\rho"
-    assert PaperLatexPrinter(function_names={"rho": r"\rho"}).doprint(S.rho) == r"\rho"
-    assert paper_latex(S.rho) == r"\varrho"
-    assert names_as_printed(r"\rho \frac{d\psi}{dt}")["rho"] == r"\rho"
+    with using(Notation.of(S)):
+        assert PaperLatexPrinter(function_names={"rho": r"\rho"}).doprint(S.rho) == r"\rho"
+        assert paper_latex(S.rho) == r"\varrho"
+        assert names_as_printed(r"\rho \frac{d\psi}{dt}", Notation.of(S).functions)["rho"] == r"\rho"
 
 
 def test_latex_error_names_the_log(tmp_path):
@@ -569,7 +582,7 @@ def test_errata_with_one_cause_are_explained_once():
     from quasicentral.documents.prose import generic_prose
     from quasicentral.engine.verdict import Method, Outcome, Refuted
 
-    entries = catalog.entries()[:3]
+    entries = texts.entries(texts.active())[:3]
     cause = NS(id="zeta-branch", title="The branch of the root", title_cs="Větev odmocniny", kind="range of validity",
                note="Holds on the first half-period only.", note_cs="Platí jen na první půlperiodě.")
 

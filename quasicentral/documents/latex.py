@@ -205,7 +205,8 @@ class PaperLatexPrinter(LatexPrinter):
         terms = super()._as_ordered_terms(expr, order=order)
         if order not in (None, "lex") or self._settings.get("order") not in (None, "lex"):
             return terms
-        return sorted(terms, key=lambda term: (-_time_order(term, self.notation.dotted), term.could_extract_minus_sign()))
+        order_in = self.notation.dotted | self.notation.variables
+        return sorted(terms, key=lambda term: (-_time_order(term, order_in), term.could_extract_minus_sign()))
 
     # the paper's arccotg
     def _print_Add(self, expr, order=None):
@@ -252,16 +253,16 @@ class PaperLatexPrinter(LatexPrinter):
         return self._incomplete("E", expr.args[0], expr.args[1], exp)
 
 
-def _time_order(expr, dotted) -> int:
-    """The highest order of a time derivative in ``expr`` (Derivative or jet symbol)."""
+def _time_order(expr, variables) -> int:
+    """The highest order of a derivative in one of ``variables`` in ``expr`` (Derivative or jet)."""
     best = 0
     for d in expr.atoms(sp.Derivative):
-        if all(v in dotted for v, _ in d.variable_count):
+        if all(v in variables for v, _ in d.variable_count):
             best = max(best, d.derivative_count)
     for sym in expr.free_symbols:
         if isinstance(sym, sp.Symbol) and is_jet(sym):
             f, order = jet_of(sym)
-            if f.args[0] in dotted:
+            if f.args[0] in variables:
                 best = max(best, order)
     return best
 
