@@ -75,3 +75,11 @@ def test_malformed_file_is_refused(tmp_path):
     bad.write_text("source = [")
     with pytest.raises(CatalogError):
         load_file(bad, "brepta1953", table)
+
+
+@pytest.mark.parametrize("eid", IDS)
+def test_uses_are_what_the_derivation_uses(eid):
+    """A derivation's declared ``uses`` are exactly the ids it asks ``derived()`` for."""
+    from quasicentral.engine.registry import actually_used
+
+    assert actually_used(eid) == set(REGISTRY[eid].uses)

@@ -36,9 +36,13 @@ def cache_dir() -> Path:
     return Path(base)
 
 
+VERDICT_LAYERS = ("notation", "engine")
+
+
 def code_fingerprint() -> str:
-    """Hash of every source file of the package and of the versions of the libraries that
-    compute the verdicts (each text's own files are hashed by :meth:`texts.Text.fingerprint`)."""
+    """Hash of the source files verdicts are computed by (:data:`VERDICT_LAYERS`) and of the
+    versions of the libraries that compute them (each text's own files are hashed by
+    :meth:`texts.Text.fingerprint`)."""
     from importlib import metadata
 
     h = hashlib.sha256(CACHE_VERSION.encode())
@@ -48,10 +52,11 @@ def code_fingerprint() -> str:
         except metadata.PackageNotFoundError:
             h.update(dist.encode())
     pkg = Path(__file__).parent.parent
-    for path in sorted(pkg.rglob("*.py")):
-        if "__pycache__" not in path.parts:
-            h.update(path.relative_to(pkg).as_posix().encode())
-            h.update(path.read_bytes())
+    for layer in VERDICT_LAYERS:  # the code a verdict depends on (not the documents, models, CLI)
+        for path in sorted((pkg / layer).rglob("*.py")):
+            if "__pycache__" not in path.parts:
+                h.update(path.relative_to(pkg).as_posix().encode())
+                h.update(path.read_bytes())
     return h.hexdigest()
 
 

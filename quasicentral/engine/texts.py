@@ -42,6 +42,7 @@ _ID = re.compile(r"[a-z0-9][a-z0-9_-]*\Z")
 _META_KEYS = {"id", "title", "title_en", "authors", "year", "language", "citation", "derivations",
               "symbols", "functions"}
 LANGUAGES = ("cs", "en", "de", "fr", "sk", "pl", "it", "es", "ru")
+DOCUMENT_FILES = ("report.toml", "figures.py")  # read by the documents only, never by the checker
 MAX_FILE_BYTES = 4 * 2**20  # a text's TOML file is typed by hand: more is not a text
 
 
@@ -85,10 +86,13 @@ class Text:
         return self.root.parent == SHIPPED_ROOT
 
     def fingerprint(self) -> str:
-        """Hash of every file of the folder (a change anywhere in it invalidates its verdicts)."""
+        """Hash of every file of the folder a verdict can depend on (all but the report's prose
+        and the figures, :data:`DOCUMENT_FILES`): a change there invalidates its verdicts."""
         h = hashlib.sha256(self.id.encode())
         for path in sorted(self.root.rglob("*")):
             rel = path.relative_to(self.root)
+            if rel.as_posix() in DOCUMENT_FILES:
+                continue
             if path.is_file() and "__pycache__" not in rel.parts and not any(p.startswith(".") for p in rel.parts):
                 h.update(rel.as_posix().encode())
                 h.update(path.read_bytes())
