@@ -314,11 +314,17 @@ def figure_items() -> tuple[FigureItem, ...]:
 
 
 def figures_for(prose: TextProse, role: str | None = None) -> list[tuple[FigureItem, object]]:
-    """The figures of a text, in the order its report.toml lists them (a figure it does not
-    list is not shown), with their prose; ``role`` keeps only "text" or "study" figures."""
-    items = {f.name: f for f in figure_items()}
-    return [(items[fp.name], fp) for fp in prose.figures
-            if fp.name in items and (role is None or fp.role == role)]
+    """The figures of a text (its folder's figures.py, in that order), each with its prose from
+    report.toml (or None); ``role`` keeps only "text" figures or "study" charts (a measured
+    chart is a study unless report.toml says otherwise)."""
+    said = {fp.name: fp for fp in prose.figures}
+    out = []
+    for fig in figures_mod.of_text(texts.get(prose.id)):
+        fp = said.get(fig.name)
+        kind = fp.role if fp is not None else ("study" if isinstance(fig, figures_mod.MeasuredChart) else "text")
+        if role is None or kind == role:
+            out.append((FigureItem(fig.name, fig.title, lambda fig=fig: fig), fp))
+    return out
 
 
 def caption(fig: FigureItem, fp, lang: str) -> str:
@@ -894,9 +900,9 @@ def _figures_section(prose: TextProse, lang: str, handout: bool) -> str:
     W = WORDS[lang]
     own = figures_for(prose, "text")
     studies = [] if handout else figures_for(prose, "study")
-    out = [f"\\section{{{W['figures']}}}\n"]
     if not own and not studies:
-        return "".join(out) + W["none_found"] + "\n\n"
+        return ""  # a text without figures has no such section
+    out = [f"\\section{{{W['figures']}}}\n"]
     if own:
         if studies:
             out.append(f"\\subsection{{{W['text_figures']}}}\n")
