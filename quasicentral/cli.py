@@ -419,7 +419,7 @@ def _texts(args, source_filter: bool = True) -> list:
         if not chosen:
             raise UsageError(f"--source {source}: no such text among {', '.join(t.id for t in selected)}")
         selected = chosen
-    return texts.activate(selected)
+    return texts.activate(selected, exclusive=True)  # a command works on exactly these texts
 
 
 def _selected(args):
