@@ -177,7 +177,7 @@ def _verify(args) -> int:
         raise UsageError(f"--dps: {exc}") from None
     entries = _selected(args)
     t0 = time.perf_counter()
-    outcomes = verify.run(entries, opts, use_cache=not args.no_cache, jobs=args.jobs)
+    outcomes = verify.run(entries, opts, use_cache=not args.no_cache, jobs=args.jobs, on_warning=_warn_line)
     seconds = time.perf_counter() - t0
     doc = output.verify_document(entries, outcomes)
     if args.junit:
@@ -190,13 +190,17 @@ def _verify(args) -> int:
     return EXIT_OK if doc["summary"]["ok"] else EXIT_UNEXPECTED
 
 
+def _warn_line(text: str) -> None:
+    print(f"quasicentral: warning: {text}", file=sys.stderr)
+
+
 def _errata(args) -> int:
     from quasicentral.engine import formats as output
     from quasicentral.engine import run as verify
     from quasicentral.engine.checker import Options
 
     entries = _selected(args)
-    outcomes = verify.run(entries, Options(), use_cache=not args.no_cache)
+    outcomes = verify.run(entries, Options(), use_cache=not args.no_cache, on_warning=_warn_line)
     doc = output.errata_document(entries, outcomes)
     if args.json:
         print(json.dumps(doc, indent=2, ensure_ascii=False))

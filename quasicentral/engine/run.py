@@ -99,8 +99,46 @@ def _worker(args):
     return eid, _outcome_json(verify_entry(catalog.get(eid), opts))
 
 
-def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None) -> list[Outcome]:
-    """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed)."""
+class CacheWarning(UserWarning):
+    """A cached verdict was discarded (wrong shape, or contradicting the errata registry)."""
+
+
+def cached_problem(eid: str, d: object) -> str | None:
+    """Why a cached outcome cannot be trusted, or None.  The cache is checked, not trusted: an
+    entry of the wrong shape, or whose status contradicts the errata registry or its own
+    verdicts, is recomputed."""
+    try:
+        o = _outcome_from_json(d)  # type: ignore[arg-type]
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:
+        return f"wrong shape ({type(exc).__name__}: {exc})"
+    if o.id != eid:
+        return f"it is the outcome of {o.id!r}"
+    errs, cleared = errata.load()
+    allowed = ("erratum",) if eid in errs else ("cleared",) if eid in cleared else ("verified",)
+    if o.status not in allowed + ("unexpected",):
+        return f"cached status {o.status!r} contradicts the errata registry (expected {' or '.join(allowed)})"
+    if o.status in ("verified", "cleared") and not isinstance(o.verdict, Verified):
+        return f"cached status {o.status!r} with a {o.verdict.name} verdict"
+    if o.status == "erratum" and not (isinstance(o.verdict, Refuted) and isinstance(o.corrected_verdict, Verified)):
+        return "cached erratum whose printed form is not refuted or whose correction is not verified"
+    return None
+
+
+def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None,
+        on_warning=None) -> list[Outcome]:
+    """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed).
+
+    A cached outcome that fails :func:`cached_problem` is discarded and recomputed; each such
+    event is reported once through ``on_warning(text)`` (default: :class:`CacheWarning` via
+    :mod:`warnings`) — the library never prints."""
+    import warnings
+
+    def warn(text: str) -> None:
+        if on_warning is not None:
+            on_warning(text)
+        else:
+            warnings.warn(text, CacheWarning, stacklevel=3)
+
     fp = code_fingerprint()
     key_of = {e.id: hashlib.sha256(json.dumps([fp, e.id, asdict(opts)], sort_keys=True).encode()).hexdigest()
               for e in entries}
@@ -111,9 +149,15 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
             f = cdir / f"{key_of[e.id]}.json"
             if f.is_file():
                 try:
-                    results[e.id] = json.loads(f.read_text())
+                    d = json.loads(f.read_text())
                 except (OSError, ValueError):
-                    pass
+                    warn(f"cache: {e.id}: unreadable cached verdict discarded, recomputed")
+                    continue
+                problem = cached_problem(e.id, d)
+                if problem:
+                    warn(f"cache: {e.id}: {problem}; discarded, recomputed")
+                    continue
+                results[e.id] = d
     todo = [e.id for e in entries if e.id not in results]
     if todo:
         load_all()
@@ -146,8 +190,11 @@ def summary(outcomes: list[Outcome]) -> dict:
         by_status[o.status] = by_status.get(o.status, 0) + 1
         by_verdict[o.verdict.name] = by_verdict.get(o.verdict.name, 0) + 1
         by_method[o.verdict.method.value] = by_method.get(o.verdict.method.value, 0) + 1
+    errs, _ = errata.load()
+    causes = sorted({c for o in outcomes if o.status == "erratum" for c in errs[o.id].causes})
     return {
         "entries": len(outcomes),
+        "causes": len(causes),
         "status": dict(sorted(by_status.items())),
         "verdicts": dict(sorted(by_verdict.items())),
         "methods": dict(sorted(by_method.items())),
