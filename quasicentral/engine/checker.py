@@ -269,7 +269,24 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
                 break
         if row is not None:
             rows.append((pt, row))
+    def divergent() -> Verdict | None:
+        """A printed integral that diverges at an endpoint (integrand ~ |x − e|^(−q), q ≥ 1)
+        is refuted with that reason: its quadratures only return noise."""
+        if not (p.has(sp.Integral) or p.has(sp.Sum)):
+            return None
+        for pt in pts[:4]:
+            why = integral_divergence(p, pt) or series_divergence(p, pt)
+            if why:
+                w = Witness(parameters={str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
+                            printed="divergent", corrected="", digits=0, certified=False, quantity=claim.quantity,
+                            relative_difference="inf", working_digits=opts.ladder[-1])
+                return Refuted(Method.NUMERIC, f"the printed form diverges: {why}", len(pts), opts.ladder, witness=w)
+        return None
+
     if not early and len(rows) < max(3, (4 * len(pts) + 4) // 5):
+        dv_ = divergent()
+        if dv_ is not None:
+            return dv_
         # a point where a side cannot be evaluated is not evidence of agreement: at most a
         # fifth of them may drop out
         return Inconclusive(Method.NONE, f"only {len(rows)} of {len(pts)} points could be evaluated")
@@ -287,11 +304,65 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options) -> Verdict:
         return Refuted(method, f"{len(disagree)} of {n} points disagree (largest relative difference {rel:.3g})",
                        n, ladder, witness=witness)
     if unstable:
+        dv_ = divergent()
+        if dv_ is not None:
+            return dv_
         return Inconclusive(Method.NUMERIC, f"{unstable} of {n} points unstable under the precision ladder", n, ladder)
     counted = f"{n} of {len(pts)}" if n < len(pts) else f"{n}"
     vacuous = all(r[-1][3] == 0 for _, r in rows)
     return Verified(Method.NUMERIC, f"agrees at {counted} points to {math.floor(0.6 * ladder[0])}+ digits"
                     + (" (both sides vanish at every point)" if vacuous else ""), n, ladder)
+
+
+def integral_divergence(expr: sp.Expr, pt: dict) -> str:
+    """Why an integral of ``expr`` diverges at the point ``pt`` ("" if none is seen): at an
+    endpoint where the integrand is unbounded, its growth order q in |f| ~ |x − e|^(−q) is
+    estimated from two distances (1e-10, 1e-20) at 40 digits; q ≥ 1 − 1e-3 is not integrable."""
+    for integral in expr.atoms(sp.Integral):
+        if len(integral.limits) != 1 or len(integral.limits[0]) != 3:
+            continue
+        x, a, b = integral.limits[0]
+        body = integral.function.xreplace(pt)
+        try:
+            with mpmath.workdps(40):
+                ends = [bridge.mp_value(sp.sympify(e).xreplace(pt), 40) for e in (a, b)]
+                f = bridge.mp_function(body, (x,))
+                for e, inward in ((ends[0], 1), (ends[1], -1)):
+                    if mpmath.im(e) != 0:
+                        continue
+                    direction = inward if ends[1] >= ends[0] else -inward
+                    g1 = abs(f(e + direction * mpmath.mpf("1e-10")))
+                    g2 = abs(f(e + direction * mpmath.mpf("1e-20")))
+                    if not (mpmath.isfinite(g1) and mpmath.isfinite(g2)) or g1 == 0 or g2 <= g1:
+                        continue
+                    q = mpmath.log(g2 / g1) / mpmath.log(mpmath.mpf(10) ** 10)
+                    if q >= 1 - 1e-3:
+                        return (f"the integrand grows like |{x} − {mpmath.nstr(e, 8)}|^(−{mpmath.nstr(q, 3)}) "
+                                f"at an end of the path (not integrable)")
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError):
+            continue
+    return ""
+
+
+def series_divergence(expr: sp.Expr, pt: dict) -> str:
+    """Why an infinite series of ``expr`` diverges at ``pt`` ("" if none is seen): the ratio
+    test, |a(n+1)/a(n)| at n = 100 and 200 (30 digits), both above 1 + 1e-3 and not falling."""
+    for sm in expr.atoms(sp.Sum):
+        if len(sm.limits) != 1 or sm.limits[0][2] is not sp.oo:
+            continue
+        var = sm.limits[0][0]
+        term = sm.function.xreplace(pt)
+        if term.free_symbols - {var}:
+            continue
+        try:
+            with time_limit(2.0):
+                r = [abs(sp.N(term.subs(var, k + 1) / term.subs(var, k), 30)) for k in (100, 200)]
+        except (_Timeout, ValueError, TypeError, ZeroDivisionError):
+            continue
+        if all(x.is_number and x.is_finite for x in r) and r[0] > 1 + 1e-3 and r[1] >= r[0] * (1 - 1e-6):
+            return (f"the terms of the series in {var} grow (|a(n+1)/a(n)| = {sp.N(r[0], 4)} at n = 100, "
+                    f"{sp.N(r[1], 4)} at n = 200): it does not converge")
+    return ""
 
 
 def _classify(rows, ladder) -> list[tuple[str, float]]:

@@ -174,11 +174,20 @@ def _check_placeholders(note: str, where: str) -> None:
             raise CatalogError(f"{where}: unknown placeholder {m.group(0)}")
 
 
+def witness_parameters_text(w) -> dict[str, str]:
+    """The witness's exact parameters as short decimals (8 significant digits) for prose."""
+    out = {}
+    for k, v in w.parameters.items():
+        val = sp.sympify(v)
+        out[k] = v if val.is_Rational and val.q == 1 else sp.sstr(sp.N(val, 8))
+    return out
+
+
 def witness_sentence(w) -> str:
     """The witness as one sentence (English), from its record only."""
     if w is None:
         return "no numeric witness (the printed relation is dimensionally inconsistent)"
-    at = ", ".join(f"{k} = {v}" for k, v in w.parameters.items())
+    at = ", ".join(f"{k} = {v}" for k, v in witness_parameters_text(w).items())
     cert = "certified" if w.certified else "not certified"
     return (f"at {at} the printed {w.quantity} is {w.printed}, the derived {w.corrected} "
             f"(relative difference {w.relative_difference}; {cert})")
@@ -193,7 +202,7 @@ def render_note(note: str, w) -> str:
         if w is None:
             return "—"
         if field.startswith("parameters."):
-            return w.parameters[field.split(".", 1)[1]]
+            return witness_parameters_text(w)[field.split(".", 1)[1]]
         return str(getattr(w, field))
 
     return _PLACEHOLDER.sub(fill, note)
