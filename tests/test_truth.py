@@ -163,9 +163,15 @@ def test_every_witness_digit_survives_an_independent_recomputation(eid, outcomes
 
 
 def test_witness_of_B_integral_t_is_right_past_the_16th_digit(outcomes):
+    """Its corrected value was printed −2.24734634730228104… (60 digits claimed, wrong from the
+    16th); quadrature at 120 digits and the closed form agree on …28191822.  Whether a ball
+    certifies it within its CPU budget or the doubled recomputation does, each digit shown is
+    the truth's."""
     w = outcomes["brepta1953:B-integral-t"].verdict.witness
-    assert w.corrected.startswith("-2.2473463473022819")
-    assert w.corrected_certified and w.printed_certified
+    truth = Fraction("-2.24734634730228191822190385565")
+    assert w.corrected == round_significant(truth, w.digits if w.corrected_certified is False else len(
+        re.sub(r"[^0-9]", "", w.corrected)))
+    assert not w.corrected.startswith("-2.247346347302281038")
 
 
 # --- 4. notes cannot drift ------------------------------------------------------------------
@@ -286,3 +292,24 @@ def test_guard_an_unregistered_refutation_is_unexpected(monkeypatch):
 def test_the_true_registry_passes_the_same_entries():
     for eid, status in (("pendulum:55", "verified"), ("pendulum:equation-of-motion", "erratum")):
         assert run.verify_entry(catalog.get(eid), FAST).status == status
+
+
+# --- the double-precision series (66), pinned term by term --------------------------------------
+@pytest.mark.parametrize("n_terms", [1, 2, 3, 4, 5, 10, 44])
+@pytest.mark.parametrize("m", ["0.0076", "0.5", "0.97"])
+def test_series_66_matches_mpmath_at_each_number_of_terms(n_terms, m):
+    """T/T0 ≈ Σ_{n<N} ((2n−1)!!/(2n)!!)² mⁿ computed independently in mpmath (binomial form
+    ((1/2)_n/n!)², 40 digits): the double-precision sum with N terms agrees to 4 ulp, and the
+    sum with N + 1 terms does not (so one term too many, or too few, fails)."""
+    import numpy as np
+
+    from quasicentral.models import period as P
+
+    with mpmath.workdps(40):
+        mm = mpmath.mpf(m)
+        exact = [mpmath.fsum((mpmath.rf(0.5, n) / mpmath.factorial(n)) ** 2 * mm**n for n in range(N))
+                 for N in (n_terms, n_terms + 1)]
+    got = float(P.series_ratio(np.array([float(m)]), n_terms)[0][0])
+    assert abs(got - float(exact[0])) <= 4 * np.spacing(float(exact[0]))
+    if abs(float(exact[1]) - float(exact[0])) > 8 * np.spacing(float(exact[0])):
+        assert abs(got - float(exact[1])) > 4 * np.spacing(float(exact[0]))

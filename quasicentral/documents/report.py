@@ -632,7 +632,8 @@ def _solution(ex: Exercise, lang: str) -> str:
         kind = KINDS_CS.get(st.erratum.kind, st.erratum.kind) if lang == "cs" else st.erratum.kind
         return (W["sol_corrected"] + "\n" + printed_display(st.erratum.corrected_latex)
                 + W["sol_kind"].format(kind=escape(kind)) + " " + W["sol_note"] + " "
-                + with_math(st.erratum.note) + "\n\n")
+                + with_math(errata_mod.render_note(st.erratum.note, getattr(st.outcome.verdict, "witness", None)))
+                + "\n\n")
     out = [W["sol_step"] + " " + paragraphs(st.derivation.doc) + "\n\n"]
     rows = derived_rows(st)
     if rows:
