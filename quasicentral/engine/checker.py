@@ -522,7 +522,11 @@ def _ball_str(b, n: int) -> str:
 
 
 def _exact(x) -> Fraction:
-    """An exact arb (a ball's end) or mpf as a fraction."""
+    """An exact arb (a ball's end), mpf or Python number as a fraction."""
+    if isinstance(x, (int, float)):
+        return Fraction(x)
+    if not hasattr(x, "man_exp"):
+        x = mpmath.mpf(x)
     if isinstance(x, mpmath.mpf):
         sgn, man, exp, _ = x._mpf_
         if not man:
