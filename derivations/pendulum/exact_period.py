@@ -58,6 +58,11 @@ PSI_TEXT = Domain.of(ranges={w: (-sp.pi / 2, sp.pi / 2)})  # the text: ψ ∈ (�
 PSI_WIDE = Domain.of(ranges={w: (-2 * sp.pi, 2 * sp.pi)})
 DIFFERENTIALS = Domain.of(ranges={w: (-sp.pi, sp.pi), DW: (-1, 1), DVPHI: (-1, 1)})
 INTEGER_N = Domain.of(ranges={N_S: (1, 41)}, definitions={n: sp.floor(N_S)})  # n = 1 … 40
+#: The text's stated branch: the rising quarter-swing φ: 0 → φ0 (φ̇ ≥ 0) that (53) integrates
+#: over.  On the motion released from rest at φ0, φ = 2 asin(k sn(Ωt + K | k²)) rises from 0 to
+#: φ0 for 3K ≤ Ωt ≤ 4K (K = K(m = k²), parameter convention, k = sin(φ0/2)).
+_K = sp.elliptic_k(KMOD**2)
+RISING_QUARTER = Domain.of(ranges={t: (3 * _K / Omega, 4 * _K / Omega)})
 
 
 # --- mechanics -------------------------------------------------------------------------------
@@ -246,10 +251,11 @@ def energy_equation():
     return {phi: exact_motion()}
 
 
-@derives("pendulum:51", mode="substitute", uses=("pendulum:50",))
+@derives("pendulum:51", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:50",))
 def angular_velocity():
-    """φ̇ along the exact motion.  Its magnitude is √(2(g/l)(cos φ − cos φ0)) by (50); its sign
-    is that of cn(Ωt + K): negative for 0 < t < T/2 (the bob swings down from φ0)."""
+    """φ̇ along the exact motion, on the text's stated branch (the rising quarter-swing).  Its
+    magnitude is √(2(g/l)(cos φ − cos φ0)) by (50); its sign is that of cn(Ωt + K): positive on
+    the rising quarter 3K < Ωt < 4K, negative for 0 < t < T/2 (the bob swings down from φ0)."""
     return {phi: exact_motion()}
 
 
@@ -270,21 +276,22 @@ def energy_first_integral():
     return {phi: exact_motion(), Cst: initial_value(first_integral())}
 
 
-@derives("pendulum:51-repeated", mode="substitute", uses=("pendulum:energy-first-integral",))
+@derives("pendulum:51-repeated", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:energy-first-integral",))
 def angular_velocity_repeated():
-    """φ̇ along the exact motion (as for (51))."""
+    """φ̇ along the exact motion on the rising quarter-swing (as for (51))."""
     return {phi: exact_motion()}
 
 
-@derives("pendulum:separated-velocity", mode="substitute", uses=("pendulum:51",))
+@derives("pendulum:separated-velocity", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:51",))
 def separated_velocity():
-    """dφ/dt along the exact motion (as for (51))."""
+    """dφ/dt along the exact motion on the rising quarter-swing (as for (51))."""
     return {phi: exact_motion()}
 
 
-@derives("pendulum:52", mode="substitute", uses=("pendulum:separated-velocity",))
+@derives("pendulum:52", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:separated-velocity",))
 def separated_differentials():
-    """dt/dφ = 1/φ̇ along the exact motion (the differential relation dt = dφ/φ̇)."""
+    """dt/dφ = 1/φ̇ along the exact motion (the differential relation dt = dφ/φ̇), on the rising
+    quarter-swing."""
     return {phi: exact_motion()}
 
 

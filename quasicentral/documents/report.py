@@ -216,12 +216,13 @@ def step_text(st: Step, by_id: dict[str, Step], prose: TextProse, lang: str, han
 def erratum_note(st: Step, prose: TextProse, lang: str) -> str:
     """What a reader is told about an erratum or a cleared suspect, in the language: the text's
     own words (report.toml), the record's note in English, or nothing."""
+    witness = getattr(st.outcome.verdict, "witness", None)
     own = prose.entry(st.entry.id).erratum.get(lang)
     if own:
-        return own
+        return errata_mod.render_note(own, witness)  # numbers only through {witness…} placeholders
     if lang == "en":
         note = st.erratum.note if st.erratum is not None else (st.cleared.note if st.cleared else "")
-        return with_math(clean_prose(note))
+        return with_math(clean_prose(errata_mod.render_note(note, witness)))
     return ""
 
 

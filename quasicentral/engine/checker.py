@@ -20,6 +20,7 @@ A *claim* is a pair of expressions that should be equal on the declared domain. 
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from dataclasses import dataclass, replace
 
 import mpmath
@@ -268,7 +269,25 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
         except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
             continue
         rows.append((pt, row))
+
+    def divergent() -> Verdict | None:
+        """A printed integral that diverges at an endpoint (integrand ~ |x − e|^(−q), q ≥ 1)
+        is refuted with that reason: its quadratures only return noise."""
+        if not (p.has(sp.Integral) or p.has(sp.Sum)):
+            return None
+        for pt in pts[:4]:
+            why = integral_divergence(p, pt) or series_divergence(p, pt)
+            if why:
+                w = Witness(parameters={str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
+                            printed="divergent", corrected="", digits=0, certified=False, quantity=claim.quantity,
+                            relative_difference="inf", working_digits=opts.ladder[-1])
+                return Refuted(Method.NUMERIC, f"the printed form diverges: {why}", len(pts), opts.ladder, witness=w)
+        return None
+
     if not early and len(rows) < max(3, (4 * len(pts) + 4) // 5):
+        dv_ = divergent()
+        if dv_ is not None:
+            return dv_
         # a point where a side cannot be evaluated is not evidence of agreement: at most a
         # fifth of them may drop out
         return Inconclusive(Method.NONE, f"only {len(rows)} of {len(pts)} points could be evaluated")
@@ -286,6 +305,9 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
         return Refuted(method, f"{len(disagree)} of {n} points disagree (largest relative difference {rel:.3g})",
                        n, ladder, witness=witness)
     if unstable:
+        dv_ = divergent()
+        if dv_ is not None:
+            return dv_
         return Inconclusive(Method.NUMERIC, f"{unstable} of {n} points unstable under the precision ladder", n, ladder)
     counted = f"{n} of {len(pts)}" if n < len(pts) else f"{n}"
     vacuous = all(r[-1][3] == 0 for _, r in rows)
@@ -293,6 +315,57 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     return Verified(Method.NUMERIC, f"agrees at {counted} points to {math.floor(opts.agreement_exponent * ladder[0])}+ "
                     f"digits ({confirmed} of them also at {ladder[-1]} digits)"
                     + (" (both sides vanish at every point)" if vacuous else ""), n, ladder)
+
+
+def integral_divergence(expr: sp.Expr, pt: dict) -> str:
+    """Why an integral of ``expr`` diverges at the point ``pt`` ("" if none is seen): at an
+    endpoint where the integrand is unbounded, its growth order q in |f| ~ |x − e|^(−q) is
+    estimated from two distances (1e-10, 1e-20) at 40 digits; q ≥ 1 − 1e-3 is not integrable."""
+    for integral in expr.atoms(sp.Integral):
+        if len(integral.limits) != 1 or len(integral.limits[0]) != 3:
+            continue
+        x, a, b = integral.limits[0]
+        body = integral.function.xreplace(pt)
+        try:
+            with mpmath.workdps(40):
+                ends = [bridge.mp_value(sp.sympify(e).xreplace(pt), 40) for e in (a, b)]
+                f = bridge.mp_function(body, (x,))
+                for e, inward in ((ends[0], 1), (ends[1], -1)):
+                    if mpmath.im(e) != 0:
+                        continue
+                    direction = inward if ends[1] >= ends[0] else -inward
+                    g1 = abs(f(e + direction * mpmath.mpf("1e-10")))
+                    g2 = abs(f(e + direction * mpmath.mpf("1e-20")))
+                    if not (mpmath.isfinite(g1) and mpmath.isfinite(g2)) or g1 == 0 or g2 <= g1:
+                        continue
+                    q = mpmath.log(g2 / g1) / mpmath.log(mpmath.mpf(10) ** 10)
+                    if q >= 1 - 1e-3:
+                        return (f"the integrand grows like |{x} − {mpmath.nstr(e, 8)}|^(−{mpmath.nstr(q, 3)}) "
+                                f"at an end of the path (not integrable)")
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError):
+            continue
+    return ""
+
+
+def series_divergence(expr: sp.Expr, pt: dict) -> str:
+    """Why an infinite series of ``expr`` diverges at ``pt`` ("" if none is seen): the ratio
+    test, |a(n+1)/a(n)| at n = 100 and 200 (30 digits), both above 1 + 1e-3 and not falling."""
+    for sm in expr.atoms(sp.Sum):
+        if len(sm.limits) != 1 or sm.limits[0][2] is not sp.oo:
+            continue
+        var = sm.limits[0][0]
+        term = sm.function.xreplace(pt)
+        if term.free_symbols - {var}:
+            continue
+        try:
+            with time_limit(2.0):
+                r = [abs(sp.N(term.subs(var, k + 1) / term.subs(var, k), 30)) for k in (100, 200)]
+        except (TimeLimitExceeded, ValueError, TypeError, ZeroDivisionError):
+            continue
+        if all(x.is_number and x.is_finite for x in r) and r[0] > 1 + 1e-3 and r[1] >= r[0] * (1 - 1e-6):
+            return (f"the terms of the series in {var} grow (|a(n+1)/a(n)| = {sp.N(r[0], 4)} at n = 100, "
+                    f"{sp.N(r[1], 4)} at n = 200): it does not converge")
+    return ""
 
 
 def _agrees(diff, ref, dps: int, opts: Options) -> bool:
@@ -333,27 +406,193 @@ def _refuted_already(rows, opts) -> bool:
 
 
 def _witness(claim, p, d, pt, row, dps, opts, rel) -> Witness:
+    """The witness at ``pt``: both values with only guaranteed digits (see :func:`witness_values`)."""
+    pv, dv = row[-1][0], row[-1][1]
+    lo_rung = (row[0][0], row[0][1])
+    vals = witness_values(p, d, pt, (pv, dv), lo_rung, dps, opts)
+    return Witness(
+        parameters={str(s): sp.sstr(v) for s, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
+        printed=vals.printed, corrected=vals.corrected, digits=min(vals.printed_digits, vals.corrected_digits),
+        certified=vals.certified, quantity=claim.quantity, relative_difference=f"{rel:.3e}",
+        printed_certified=vals.printed_certified, corrected_certified=vals.corrected_certified,
+        working_digits=dps,
+    )
+
+
+WITNESS_DIGITS = 20  # significant digits a witness value shows at most
+BALL_PREC_LIMIT = 4096  # bits: the last precision tried for a witness ball
+WITNESS_BUDGET = 4  # CPU time of a witness's balls, in units of Options.certify_seconds
+
+
+@dataclass(frozen=True)
+class WitnessValues:
+    printed: str
+    corrected: str
+    printed_digits: int
+    corrected_digits: int
+    printed_certified: bool
+    corrected_certified: bool
+    certified: bool  # the ball of printed − corrected excludes 0
+
+
+def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) -> WitnessValues:
+    """Both witness values, every digit shown guaranteed.
+
+    With balls (python-flint, as ``good()`` does): start at the ladder's precision and double
+    until both balls round to ``want`` significant digits at both ends and the ball of the
+    difference decides, or :data:`BALL_PREC_LIMIT` is reached; a value is then printed with the
+    digits its ball guarantees (correctly rounded).  Where a side has no ball form (an integrand
+    unbounded at an end of the path, a function without a ball evaluation), its value is
+    recomputed at twice the top rung's precision and only the digits on which the two agree are
+    shown (``*_certified`` False).  Without ``opts.certify`` (the fast mutation checker) the two
+    rungs of the ladder play that part.
+    """
+    balls: list = [None, None]
     certified = False
     if opts.certify:
-        try:
-            pb = bridge.arb_eval(p, pt, seconds=opts.certify_seconds)
-            db = bridge.arb_eval(d, pt, seconds=opts.certify_seconds)
-            certified = bool(pb.is_finite() and db.is_finite() and not (pb - db).contains(0))
-        except (bridge.Unsupported, ValueError, ZeroDivisionError, TypeError, AttributeError):
-            certified = False
-    pv, dv = row[-1][0], row[-1][1]
-    with mpmath.workdps(dps):
-        return Witness(
-            parameters={str(s): sp.sstr(v) for s, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
-            printed=_num_str(pv), corrected=_num_str(dv), digits=dps, certified=certified,
-            quantity=claim.quantity, relative_difference=f"{rel:.3e}",
-        )
+        import time
+
+        prec = max(64, int(dps * 3.33) + 8)
+        # CPU budget of the whole ladder of balls: a ball integral's cost grows fast with the
+        # precision, and its time-out only turns the integrand into NaN
+        budget = time.process_time() + WITNESS_BUDGET * opts.certify_seconds
+        while True:
+            for i, expr in enumerate((p, d)):
+                if balls[i] is not None and _ball_digits(balls[i], want) >= want:
+                    continue
+                left = budget - time.process_time()
+                if balls[i] is False or (left <= 0 and balls[i] is not None):
+                    continue
+                try:
+                    b = bridge.arb_eval(expr, pt, prec=prec, seconds=max(min(opts.certify_seconds, left), 0.05))
+                except (bridge.Unsupported, ValueError, ZeroDivisionError, TypeError, AttributeError):
+                    b = None
+                # a ball that is not finite (out of time, or unbounded) will not become finite
+                # at a higher precision: keep the last good one, or give up on balls for this side
+                balls[i] = b if b is not None and b.is_finite() else (balls[i] if balls[i] is not None else False)
+            if all(b is not None and b is not False for b in balls):  # identity: acb(0) == False
+                certified = not (balls[0] - balls[1]).contains(0)
+            done = all(b is False or (b is not None and _ball_digits(b, want) >= want) for b in balls)
+            settled = done and (certified or any(b is False for b in balls))
+            if settled or prec >= BALL_PREC_LIMIT or time.process_time() > budget:
+                break
+            prec *= 2
+    out = []
+    for i in range(2):
+        b = balls[i]
+        n = _ball_digits(b, want) if b is not None and b is not False else 0
+        if n >= 1:
+            out.append((_ball_str(b, n), n, True))
+            continue
+        # no ball: agreement with a recomputation at twice the precision
+        if opts.certify:
+            try:
+                again = bridge.mp_eval((p, d)[i], pt, 2 * dps)
+            except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
+                again = None
+            ref, other = again, top[i]
+        else:
+            ref, other = top[i], low[i]
+        s, n = _agreed(ref, other, want) if ref is not None else ("", 0)
+        out.append((s, n, False))
+    (ps, pn, pc), (cs, cn, cc) = out
+    return WitnessValues(ps, cs, pn, cn, pc, cc, certified)
 
 
-def _num_str(v) -> str:
-    if isinstance(v, mpmath.mpc) and abs(v.imag) <= abs(v) * mpmath.mpf(10) ** (-mpmath.mp.dps + 5):
-        v = v.real
-    return mpmath.nstr(v, 25)
+def _real_part(b):
+    """The real ball of an acb whose imaginary part is exactly 0, else None."""
+    im = b.imag
+    if im.is_exact() and im == 0:
+        return b.real
+    return None
+
+
+def _ball_digits(b, want: int) -> int:
+    """How many significant digits (≤ want) both ends of the real ball ``b`` round to alike."""
+    r = _real_part(b) if b is not None and b is not False else None
+    if r is None:
+        return 0
+    if r.is_exact() and r == 0:
+        return want
+    mid, rad = _exact(r.mid()), _exact(r.rad())  # exact (lower()/upper() would round)
+    lo, hi = mid - rad, mid + rad
+    if lo == 0 or hi == 0 or (lo > 0) != (hi > 0):
+        return 0
+    for n in range(want, 0, -1):
+        if round_significant(lo, n) == round_significant(hi, n):
+            return n
+    return 0
+
+
+def _ball_str(b, n: int) -> str:
+    r = _real_part(b)
+    if r.is_exact() and r == 0:
+        return "0"
+    return round_significant(_exact(r.mid()), n)
+
+
+def _exact(x) -> Fraction:
+    """An exact arb (a ball's end), mpf or Python number as a fraction."""
+    if isinstance(x, (int, float)):
+        return Fraction(x)
+    if not hasattr(x, "man_exp"):
+        x = mpmath.mpf(x)
+    if isinstance(x, mpmath.mpf):
+        sgn, man, exp, _ = x._mpf_
+        if not man:
+            return Fraction(0)
+        man = -man if sgn else man
+    else:
+        man, exp = x.man_exp()
+    man, exp = int(man), int(exp)
+    return Fraction(man * 2**exp) if exp >= 0 else Fraction(man, 2**-exp)
+
+
+def round_significant(x: Fraction, n: int) -> str:
+    """``x`` correctly rounded (half to even) to ``n`` significant decimal digits, exactly."""
+    if x == 0:
+        return "0"
+    sign = "-" if x < 0 else ""
+    a = abs(x)
+    e10 = len(str(a.numerator)) - len(str(a.denominator))  # within one of floor(log10 a)
+    while a >= Fraction(10) ** (e10 + 1):
+        e10 += 1
+    while a < Fraction(10) ** e10:
+        e10 -= 1
+    q = round(a * Fraction(10) ** (n - 1 - e10))  # Fraction.__round__: half to even, exact
+    if q >= 10**n:
+        q //= 10
+        e10 += 1
+    digits = str(q)
+    if -5 <= e10 < n:
+        if e10 >= 0:
+            whole, frac = digits[:e10 + 1], digits[e10 + 1:]
+            return sign + whole + ("." + frac if frac else "")
+        return sign + "0." + "0" * (-e10 - 1) + digits
+    return sign + digits[0] + ("." + digits[1:] if n > 1 else "") + f"e{e10:+d}"
+
+
+def _agreed(a, b, want: int) -> tuple[str, int]:
+    """The digits (≤ want) on which two evaluations of one value agree, from the more precise."""
+    a, b = _as_real(a), _as_real(b)
+    if a is None or b is None:
+        return "", 0
+    if a == 0 and b == 0:
+        return "0", want
+    fa, fb = _exact(a), _exact(b)
+    for n in range(want, 0, -1):
+        sa = round_significant(fa, n)
+        if sa == round_significant(fb, n):
+            return sa, n
+    return "", 0
+
+
+def _as_real(v):
+    if isinstance(v, mpmath.mpc):
+        if abs(v.imag) <= abs(v) * mpmath.mpf(10) ** (-40):
+            return v.real
+        return None
+    return v
 
 
 def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: str, opts: Options,

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
+from quasicentral.engine import errata as errata_mod
 from quasicentral.engine import texts
 from quasicentral.engine.catalog import Entry
 from quasicentral.engine.verdict import Outcome, Status
@@ -38,41 +39,60 @@ def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
 
 def _witness_json(w) -> dict:
     return {"parameters": dict(w.parameters), "printed": w.printed, "corrected": w.corrected,
-            "digits": w.digits, "certified": w.certified, "quantity": w.quantity,
-            "relative_difference": w.relative_difference}
+            "digits": w.digits, "certified": w.certified, "printed_certified": w.printed_certified,
+            "corrected_certified": w.corrected_certified, "working_digits": w.working_digits,
+            "quantity": w.quantity, "relative_difference": w.relative_difference}
 
 
 def errata_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
+    """Errata (each with its ``cause`` ids and its note rendered from its witness), the root
+    ``causes`` (id, title, kind, the displays they affect, one witness) and cleared suspects."""
     out_e, out_c = [], []
+    witness_of: dict[str, dict] = {}
     for e, o in zip(entries, outcomes):
         text = texts.text_of(e.id)
         errs, cleared = text.errata, text.cleared
         if e.id in errs:
             rec = errs[e.id]
             w = getattr(o.verdict, "witness", None)
-            out_e.append({**_entry_head(e), "kind": rec.kind, "printed_latex": e.latex,
-                          "corrected_latex": rec.corrected_latex,
-                          "witness": _witness_json(w) if w else _dimensional_witness(o),
-                          "note": rec.note, "status": o.status.value,
+            wj = _witness_json(w) if w else _dimensional_witness(o)
+            witness_of[e.id] = wj
+            out_e.append({**_entry_head(e), "kind": rec.kind, "cause": list(rec.causes),
+                          "printed_latex": e.latex, "corrected_latex": rec.corrected_latex,
+                          "witness": wj, "note": errata_mod.render_note(rec.note, w), "status": o.status.value,
                           "evidence": o.verdict.detail, "method": o.verdict.method.value})
         if e.id in cleared:
             rec = cleared[e.id]
             # on an erratum the suspected detail is kept in the correction: its verdict is the evidence
             v = o.corrected_verdict if e.id in errs else o.verdict
             out_c.append({**_entry_head(e), "kind": "cleared", "suspicion": rec.suspicion,
+                          "branch": rec.branch or None,
                           "printed_latex": e.latex,
                           "corrected_latex": errs[e.id].corrected_latex if e.id in errs else e.latex,
                           "witness": None, "note": rec.note, "status": o.status.value,
                           "evidence": (("the correction keeps it and is " if e.id in errs else "")
                                        + f"{v.name} ({v.method.value}): {v.detail}"),
                           "method": v.method.value})
-    return {"errata": out_e, "cleared": out_c}
+    causes = []
+    selected = list(dict.fromkeys(texts.text_of(e.id) for e in entries))
+    for c in (c for t in selected for c in t.causes.values()):
+        displays = [r["id"] for r in out_e if r["text"] == c.source and c.id in r["cause"]]
+        if not displays:
+            continue  # a cause of entries not selected
+        # one witness: the first certified one among its displays, else the first
+        ws = [(i, witness_of[i]) for i in displays]
+        wid, wit = next(((i, w) for i, w in ws if w.get("certified")), ws[0])
+        causes.append({"id": c.id, "text": c.source, "source": c.source, "title": c.title, "title_cs": c.title_cs, "kind": c.kind,
+                       "note": c.note, "note_cs": c.note_cs, "displays": displays,
+                       "witness": {"display": wid, **wit}})
+    return {"causes": causes, "errata": out_e, "cleared": out_c}
 
 
 def _dimensional_witness(o: Outcome) -> dict:
     """A dimensional refutation has no numeric point; its witness is the dimension mismatch."""
     return {"parameters": {}, "printed": o.verdict.dimensions, "corrected": "consistent",
-            "digits": 0, "certified": True, "quantity": "dimensions", "relative_difference": ""}
+            "digits": 0, "certified": True, "printed_certified": True, "corrected_certified": True,
+            "working_digits": 0, "quantity": "dimensions", "relative_difference": ""}
 
 
 def catalog_document(entries: list[Entry], coverage: dict) -> dict:
@@ -122,17 +142,23 @@ def verify_table(doc: dict) -> str:
     rows = [[r["id"], r["status"], r["verdict"], r["method"], (r["detail"] or "")[:70]] for r in doc["equations"]]
     s = doc["summary"]
     tail = (f"\n{s['entries']} entries: " + ", ".join(f"{v} {k}" for k, v in s["status"].items())
+            + (f" ({s['causes']} root causes)" if s.get("causes") else "")
             + ("" if s["ok"] else f"\nunexpected: {', '.join(s['unexpected'])}"))
     return _table(["id", "status", "verdict", "method", "detail"], rows) + tail
 
 
 def errata_table(doc: dict) -> str:
+    crows = [[c["id"], c["kind"], str(len(c["displays"])), c["title"][:60]] for c in doc["causes"]]
+    out = f"Root causes ({len(doc['causes'])} over {len(doc['errata'])} errata)\n" + _table(
+        ["cause", "kind", "displays", "title"], crows)
+    for c in doc["causes"]:
+        out += f"\n  {c['id']}: " + ", ".join(c["displays"])
     rows = []
     for r in doc["errata"]:
         w = r["witness"]
         wit = "" if not w else (f"printed {w['printed'][:18]} vs {w['corrected'][:18]}" + (" (certified)" if w["certified"] else ""))
-        rows.append([r["id"], r["kind"], r["status"], wit])
-    out = "Errata\n" + _table(["id", "kind", "status", "witness"], rows)
+        rows.append([r["id"], ",".join(r["cause"]), r["status"], wit])
+    out += "\n\nErrata\n" + _table(["id", "cause", "status", "witness"], rows)
     crow = [[r["id"], r["suspicion"][:50], r["status"]] for r in doc["cleared"]]
     return out + "\n\nCleared suspects\n" + _table(["id", "suspicion", "status"], crow)
 

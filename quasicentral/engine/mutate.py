@@ -4,9 +4,17 @@ and count how many the checker catches.
 Operators, each at one place of the relation: sign flip of a term, changed exponent (×2,
 ÷2, +1), a factor 2, k ↔ k² (one occurrence of a symbol s → s²), dropped parentheses
 (a(b + c) → ab + c); and over the whole relation: two symbols swapped, an independent
-variable slipped for another declared quantity of the same dimension (t for a period T).  A mutant that sympy shows equal to the original is *equivalent* and not
-counted.  Recall = detected / mutants (target 100 %); false alarms = verified entries that the
-same fast checker refutes unmutated (target 0).
+variable slipped for another declared quantity of the same dimension (t for a period T).  A
+mutant that sympy shows equal to the original is *equivalent* and not counted.  A mutant the
+fast checker does not refute may still be equivalent *on the declared domain*
+(ω = √(Ω² − κ²) ⇔ κ = √(Ω² − ω²) for κ, ω ≥ 0): it is set aside as such only when sympy proves
+its compared values equal with the domain's signs as assumptions, or when the full checker
+(:data:`STRONG`: more points, a higher ladder) verifies it; both kinds are reported
+(``equivalent_on_domain``).  Recall = detected / mutants (target 100 %); false alarms =
+verified entries that the same fast checker refutes unmutated (target 0).
+
+Exit codes of ``quasicentral mutate``: 0 when the recall is 100 % and there is no false alarm;
+1 otherwise (an undetected mutant or a false alarm, listed); 2 bad usage.
 """
 
 from __future__ import annotations
@@ -20,11 +28,13 @@ import sympy as sp
 from quasicentral.engine import catalog, texts
 from quasicentral.engine.checker import Options, check
 from quasicentral.engine.registry import REGISTRY, derived
-from quasicentral.engine.verdict import Refuted
+from quasicentral.engine.verdict import Refuted, Verified
 from quasicentral.notation.symbols import SymbolTable
 from quasicentral.progress import OptionalCallback, notify
 
 FAST = Options(points=10, symbolic=False, certify=False)
+#: the check that decides numeric equivalence on the domain: 3× the points, a 40/80-digit ladder
+STRONG = Options(dps=40, points=30, symbolic=False, certify=False)
 
 
 @dataclass(frozen=True)
@@ -175,20 +185,66 @@ def _equivalent(mutant: list, original: list, der, result) -> bool:
     return all(symbolic_zero(a.printed - b.printed, 1.0, force=False) for a, b in zip(cm, co))
 
 
+def _domain_assumptions(der, syms, table: SymbolTable) -> dict:
+    """Each symbol whose declared range is non-negative, replaced by a non-negative (or
+    positive) symbol of the same name: the domain's signs as sympy assumptions."""
+    ranges = der.domain.range_map(table)
+    repl = {}
+    for s in syms:
+        if not isinstance(s, sp.Symbol) or s not in ranges:
+            continue
+        lo = sp.sympify(ranges[s][0])
+        if lo.is_number and lo.is_nonnegative:
+            repl[s] = sp.Symbol(s.name, positive=True) if lo.is_positive else sp.Symbol(s.name, nonnegative=True)
+    return repl
+
+
+def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTable) -> str | None:
+    """``"proof"`` when sympy proves every compared value of the mutant equal to the derived one
+    with the domain's signs as assumptions (κ ≥ 0 ⇒ √(κ²) = κ); ``"numeric"`` when the full
+    checker (:data:`STRONG`) verifies it at every point; else None."""
+    from quasicentral.engine.checker import claims_for, numeric, symbolic_zero
+    from quasicentral.notation.domain import substitute_definitions
+    from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
+
+    try:
+        with time_limit(FAST.symbolic_seconds):
+            cm = claims_for(mutant, der, result)
+    except (TimeLimitExceeded, Exception):  # noqa: BLE001 - CannotCompare included
+        return None
+    defs = der.domain.definition_map(table)
+    residuals = [substitute_definitions(c.printed - c.derived, defs) for c in cm]
+    syms = set().union(*(r.free_symbols for r in residuals)) if residuals else set()
+    repl = _domain_assumptions(der, syms, table)
+    if repl and all(symbolic_zero(r.xreplace(repl), 2.0, force=False) for r in residuals):
+        return "proof"
+    from quasicentral.engine.verdict import Verified
+
+    if all(isinstance(numeric(c, der.domain, f"{label}#{i}", STRONG, table), Verified) for i, c in enumerate(cm)):
+        return "numeric"
+    return None
+
+
 def _run_entry(args):
     eid, per_entry = args
     entry = texts.entry(eid)
     der = REGISTRY[eid]
     base = check(entry.relations(), entry.dims, der, eid, FAST, entry.symbols)
-    rows = []
+    rows, on_domain = [], []
     result = derived(eid)
     for mu in mutants_of(entry, per_entry):
         if _equivalent(list(mu.relations), entry.relations(), der, result):
             continue
         v = check(list(mu.relations), entry.dims, der, eid, FAST, entry.symbols)
+        if isinstance(v, Verified):
+            how = equivalent_on_domain(list(mu.relations), der, result, f"{eid}:{mu.operator}:{mu.site}",
+                                       entry.symbols)
+            if how is not None:
+                on_domain.append({"entry": eid, "operator": mu.operator, "site": mu.site, "how": how})
+                continue
         rows.append({"entry": eid, "operator": mu.operator, "site": mu.site, "detected": isinstance(v, Refuted),
-                     "verdict": v.name, "method": v.method.value})
-    return eid, isinstance(base, Refuted), rows
+                     "verdict": v.name, "method": v.method.value, "detail": v.detail[:200]})
+    return eid, isinstance(base, Refuted), rows, on_domain
 
 
 def verified_entries(selected: list[texts.Text]) -> list[str]:
@@ -223,8 +279,9 @@ def run(selected: list[texts.Text] | None = None, per_entry: int | None = None, 
             by_id[res[0]] = res
             notify(progress, len(by_id), len(work), res[0], 0, "entries mutated")
     results = [by_id[i] for i in ids]
-    rows = [r for _, _, rs in results for r in rs]
-    false_alarms = [eid for eid, alarmed, _ in results if alarmed]
+    rows = [r for _, _, rs, _ in results for r in rs]
+    on_domain = [r for _, _, _, ds in results for r in ds]
+    false_alarms = [eid for eid, alarmed, _, _ in results if alarmed]
     detected = sum(r["detected"] for r in rows)
     by_op: dict[str, dict[str, int]] = {}
     for r in rows:
@@ -240,6 +297,7 @@ def run(selected: list[texts.Text] | None = None, per_entry: int | None = None, 
         "false_alarm_entries": false_alarms,
         "by_operator": dict(sorted(by_op.items())),
         "undetected": [r for r in rows if not r["detected"]],
+        "equivalent_on_domain": on_domain,
     }
 
 
@@ -250,4 +308,6 @@ def table(res: dict) -> str:
         lines.append(f"  {op:22s} {d['detected']:4d} / {d['mutants']:<4d}")
     for r in res["undetected"]:
         lines.append(f"  undetected: {r['entry']} {r['operator']} at {r['site']} ({r['verdict']})")
+    for r in res.get("equivalent_on_domain", []):
+        lines.append(f"  equivalent on the domain ({r['how']}), not counted: {r['entry']} {r['operator']} at {r['site']}")
     return "\n".join(lines)

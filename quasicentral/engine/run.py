@@ -140,13 +140,52 @@ def worker_pool(jobs: int) -> ProcessPoolExecutor:
                                initializer=_die_with_parent, initargs=(os.getpid(),))
 
 
+class CacheWarning(UserWarning):
+    """A cached verdict was discarded (wrong shape, or contradicting the errata registry)."""
+
+
+def cached_problem(eid: str, d: object) -> str | None:
+    """Why a cached outcome cannot be trusted, or None.  The cache is checked, not trusted: an
+    entry of the wrong shape, or whose status contradicts the errata registry or its own
+    verdicts, is recomputed."""
+    try:
+        o = _outcome_from_json(d)  # type: ignore[arg-type]
+    except (KeyError, TypeError, ValueError, AttributeError) as exc:
+        return f"wrong shape ({type(exc).__name__}: {exc})"
+    if o.id != eid:
+        return f"it is the outcome of {o.id!r}"
+    text = texts.text_of(eid)
+    allowed = ((Status.ERRATUM,) if eid in text.errata else (Status.CLEARED,) if eid in text.cleared
+               else (Status.VERIFIED,))
+    if o.status not in allowed + (Status.UNEXPECTED,):
+        return (f"cached status {o.status.value!r} contradicts the errata registry "
+                f"(expected {' or '.join(a.value for a in allowed)})")
+    if o.status in (Status.VERIFIED, Status.CLEARED) and not isinstance(o.verdict, Verified):
+        return f"cached status {o.status.value!r} with a {o.verdict.name} verdict"
+    if o.status is Status.ERRATUM and not (isinstance(o.verdict, Refuted)
+                                           and isinstance(o.corrected_verdict, Verified)):
+        return "cached erratum whose printed form is not refuted or whose correction is not verified"
+    return None
+
+
 def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None,
-        progress: OptionalCallback = None) -> list[Outcome]:
+        progress: OptionalCallback = None, on_warning=None) -> list[Outcome]:
     """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed).
 
     ``progress``, if given, is called with a :class:`quasicentral.progress.Progress` once the
     cache has been read (``done`` = ``cached`` = the entries read back) and after each computed
-    entry (``current`` = its id); it is called in this process, never in a worker."""
+    entry (``current`` = its id); it is called in this process, never in a worker.  A cached
+    outcome that fails :func:`cached_problem` is discarded and recomputed; each such event is
+    reported once through ``on_warning(text)`` (default: :class:`CacheWarning` via
+    :mod:`warnings`) — the library never prints."""
+    import warnings
+
+    def warn(text: str) -> None:
+        if on_warning is not None:
+            on_warning(text)
+        else:
+            warnings.warn(text, CacheWarning, stacklevel=3)
+
     fp = code_fingerprint()
     text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
     key_of = {e.id: hashlib.sha256(json.dumps([fp, text_fp[e.text], e.id, asdict(opts)], sort_keys=True).encode()
@@ -158,9 +197,15 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
             f = cdir / f"{key_of[e.id]}.json"
             if f.is_file():
                 try:
-                    results[e.id] = json.loads(f.read_text())
+                    d = json.loads(f.read_text())
                 except (OSError, ValueError):
-                    pass
+                    warn(f"cache: {e.id}: unreadable cached verdict discarded, recomputed")
+                    continue
+                problem = cached_problem(e.id, d)
+                if problem:
+                    warn(f"cache: {e.id}: {problem}; discarded, recomputed")
+                    continue
+                results[e.id] = d
     todo = [e.id for e in entries if e.id not in results]
     cached = len(results)
     notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries")
@@ -198,8 +243,11 @@ def summary(outcomes: list[Outcome]) -> dict:
         by_status[o.status.value] = by_status.get(o.status.value, 0) + 1
         by_verdict[o.verdict.name] = by_verdict.get(o.verdict.name, 0) + 1
         by_method[o.verdict.method.value] = by_method.get(o.verdict.method.value, 0) + 1
+    causes = sorted({(o.id.split(":", 1)[0], c) for o in outcomes if o.status is Status.ERRATUM
+                     for c in texts.text_of(o.id).errata[o.id].causes})
     return {
         "entries": len(outcomes),
+        "causes": len(causes),
         "status": dict(sorted(by_status.items())),
         "verdicts": dict(sorted(by_verdict.items())),
         "methods": dict(sorted(by_method.items())),

@@ -115,18 +115,23 @@ class Text:
         return out
 
     @cached_property
-    def _errata(self):
+    def records(self) -> errata_mod.Records:
+        """The text's errata, cleared suspects and root causes."""
         for p in self.errata_files:
             _check_size(p)
-        return errata_mod.load(self.errata_files, self.entries, self.symbols)
+        return errata_mod.load(self.errata_files, self.entries, self.symbols, self.id)
 
     @property
     def errata(self) -> dict[str, errata_mod.Erratum]:
-        return self._errata[0]
+        return self.records.errata
 
     @property
     def cleared(self) -> dict[str, errata_mod.Cleared]:
-        return self._errata[1]
+        return self.records.cleared
+
+    @property
+    def causes(self) -> dict[str, errata_mod.Cause]:
+        return self.records.causes
 
     def figures_module(self):
         """The text's ``figures.py`` imported (None when the folder has none)."""
@@ -382,6 +387,14 @@ def records(selected: list[Text] | None = None) -> tuple[dict, dict]:
         errata.update(t.errata)
         cleared.update(t.cleared)
     return errata, cleared
+
+
+def causes(selected: list[Text] | None = None) -> dict:
+    """The root causes of ``selected`` (default: the active texts), merged (ids are the texts')."""
+    out: dict = {}
+    for t in selected if selected is not None else active():
+        out.update(t.causes)
+    return out
 
 
 def reset() -> None:

@@ -27,15 +27,24 @@ class Method(str, Enum):
 
 @dataclass(frozen=True)
 class Witness:
-    """A reproducible point where two sides differ."""
+    """A reproducible point where two sides differ.
+
+    Every digit of ``printed`` and ``corrected`` is guaranteed: each is the value correctly
+    rounded to the significant digits shown, proven by a ball whose both ends round to the same
+    string (``printed_certified`` / ``corrected_certified``), or else the digits on which a
+    recomputation at twice the precision agrees (not a proof: the flag is then False).
+    """
 
     parameters: dict[str, str]  # symbol name -> exact value (sympy string)
-    printed: str  # value of the printed side, as a decimal string
-    corrected: str  # value of the derived (correct) side
-    digits: int  # working precision of the values, decimal digits
+    printed: str  # value of the printed side, as a decimal string (every digit guaranteed)
+    corrected: str  # value of the derived (correct) side (every digit guaranteed)
+    digits: int  # significant digits guaranteed in both values (the fewer of the two)
     certified: bool  # ball arithmetic proves printed != corrected at this point
     quantity: str = ""  # what the values are (e.g. "x(t)", "lhs - rhs on the derived solution")
     relative_difference: str = ""
+    printed_certified: bool = False  # the printed value's digits come from a ball
+    corrected_certified: bool = False  # the corrected value's digits come from a ball
+    working_digits: int = 0  # precision of the ladder's top rung where the point was found
 
 
 @dataclass(frozen=True)
