@@ -15,7 +15,7 @@ from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
 C1, C2, C3, C4, R, S, g, l, m, phi, psi, rho, t = S_("C1 C2 C3 C4 R S g l m phi psi rho t")
 
-texts.active()
+texts.activate(texts.shipped())
 
 
 def _value(expr, seed=1, **fixed):

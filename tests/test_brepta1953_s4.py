@@ -21,7 +21,7 @@ S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
 parse = S_.parse
 from quasicentral.engine.verdict import Refuted, Verified
 
-texts.active()
+texts.activate(texts.shipped())
 OPTS = Options(symbolic=False, points=12)
 
 
@@ -75,7 +75,7 @@ def test_21_is_the_limit_of_19_as_kappa_tends_to_omega():
 
 
 def test_time_elimination_gives_the_corrected_20_and_22():
-    recs, _ = texts.records()
+    recs, _ = texts.records(texts.shipped())
     pts = [{R0: sp.Rational(3, 10), v0: sp.Rational(7, 5), kappa: sp.Rational(1, 3), omega: sp.Rational(9, 4),
             n: 2, x: sp.Rational(-1, 20), y: sp.Rational(1, 30)},
            {R0: sp.Rational(1, 2), v0: sp.Rational(1, 7), kappa: sp.Rational(2, 1), omega: sp.Rational(1, 3),
@@ -106,7 +106,7 @@ def _residual_20(relation, theta, values=None):
 
 
 def test_20_branch_the_corrected_form_without_n_holds_on_the_first_half_turn_only():
-    recs, _ = texts.records()
+    recs, _ = texts.records(texts.shipped())
     corr = recs["brepta1953:20"].corrected
     no_branch = corr.subs(n, 0)
     for k in range(8):
@@ -121,7 +121,7 @@ def test_20_branch_the_corrected_form_without_n_holds_on_the_first_half_turn_onl
 def test_20_branch_through_the_engine():
     """The check itself sees the branch: the dimension-fixed form without nπ verifies on the first
     half-turn, and is refuted over eight half-turns."""
-    recs, _ = texts.records()
+    recs, _ = texts.records(texts.shipped())
     no_branch = [recs["brepta1953:20"].corrected.subs(n, 0)]
     entry = texts.entry("brepta1953:20")
     der = REGISTRY["brepta1953:20"]

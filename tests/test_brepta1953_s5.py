@@ -20,8 +20,8 @@ from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
 Omega, R0, beta, g, k, l, t, u, v0, z, zeta = S_("Omega R0 beta g k l t u v0 z zeta")
 
-texts.active()
-ERRATA, _ = texts.records()
+texts.activate(texts.shipped())
+ERRATA, _ = texts.records(texts.shipped())
 #: parameter sets (R0, v0, Ω, β): u = R0Ω > v0 as in the paper (moderate and near-circular and
 #: strongly elliptic), and one with u < v0 (k² < 0), where the corrected form holds as well
 CASES = [

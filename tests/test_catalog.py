@@ -9,7 +9,7 @@ from quasicentral.engine.catalog import CatalogError, load_file
 from quasicentral.notation.dimensions import check_relation
 from quasicentral.engine.registry import REGISTRY
 
-ENTRIES = texts.entries(texts.active())
+ENTRIES = texts.entries(texts.shipped())
 IDS = [e.id for e in ENTRIES]
 
 
@@ -45,7 +45,7 @@ def test_dimensions(eid):
     checks = [check_relation(r, e.dims) for r in e.relations()]
     problems = [str(c) for c in checks if c.inconsistent or c.undetermined]
     assert not any(c.undetermined for c in checks), f"a dimension is not declared: {problems}"
-    errs, _ = texts.records()
+    errs, _ = texts.records(texts.shipped())
     if problems:
         assert eid in errs, f"dimensionally inconsistent and not a registered erratum: {problems}"
     if eid in errs:
@@ -55,7 +55,7 @@ def test_dimensions(eid):
 
 
 def test_every_entry_has_a_derivation():
-    texts.active()
+    texts.activate(texts.shipped())
     missing = [i for i in IDS if i not in REGISTRY]
     assert not missing
     stray = [i for i in REGISTRY if i not in set(IDS)]
@@ -82,4 +82,5 @@ def test_uses_are_what_the_derivation_uses(eid):
     """A derivation's declared ``uses`` are exactly the ids it asks ``derived()`` for."""
     from quasicentral.engine.registry import actually_used
 
+    texts.activate(texts.shipped())
     assert actually_used(eid) == set(REGISTRY[eid].uses)

@@ -99,8 +99,8 @@ def _balanced(row: str) -> bool:
 
 
 def _all_printed_latex():
-    errs, _ = texts.records()
-    out = [(e.id, e.latex) for e in texts.entries(texts.active())]
+    errs, _ = texts.records(texts.shipped())
+    out = [(e.id, e.latex) for e in texts.entries(texts.shipped())]
     out += [(i + "/corrected", r.corrected_latex) for i, r in errs.items()]
     return out
 
@@ -124,10 +124,10 @@ _ALLOWED = set("áéíóúýčďěňřšťůžÁÉÍÓÚÝČĎĚŇŘŠŤŮŽ")
 def _prose():
     from quasicentral.engine.registry import REGISTRY
 
-    texts.active()
-    errs, cleared = texts.records()
+    texts.activate(texts.shipped())
+    errs, cleared = texts.records(texts.shipped())
     out = [d.doc for d in REGISTRY.values()] + [r.note for r in errs.values()]
-    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for e in texts.entries(texts.active())]
+    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for e in texts.entries(texts.shipped())]
     return out
 
 
@@ -149,6 +149,7 @@ def test_text_examples():
 @pytest.fixture(scope="module")
 def generated(outcomes, tmp_path_factory):
     """Every golden document generated in-process, written with its figures to a tmp dir."""
+    texts.activate(texts.shipped(), exclusive=True)  # the golden documents are the shipped texts'
     docs: dict[str, str] = {}
     for kinds, langs in report.GOLDEN:
         docs.update(report.generate(kinds, langs, outcomes))
@@ -249,7 +250,7 @@ def test_every_figure_is_included(generated):
 
     _, docs = generated
     names = {f.name for f in report.figures_needed(docs)}
-    assert names == {f.name for t in texts.active() for f in figures.of_text(t)}
+    assert names == {f.name for t in texts.shipped() for f in figures.of_text(t)}
 
 
 # --- compiling: every document once per test run, then the done-when checks on the PDFs ---------
@@ -360,7 +361,7 @@ def english_phrases() -> list[str]:
     out |= {"sympy proves", "points disagree", "agrees at", "consistent", "anglicky", "Dimensions",
             "As printed", "Re-derived", "Verdict", "Step", "Witness", "Exercise", "Solution", "the", "with",
             "which", "from", "printed"}
-    texts.active()
+    texts.activate(texts.shipped())
     for d in REGISTRY.values():
         for m in re.finditer(r"\b(?:the|from|with|which|where|gives|since) [a-z]+ [a-z]+\b", d.doc):
             out.add(m.group(0))
@@ -582,7 +583,7 @@ def test_errata_with_one_cause_are_explained_once():
     from quasicentral.documents.prose import generic_prose
     from quasicentral.engine.verdict import Method, Outcome, Refuted
 
-    entries = texts.entries(texts.active())[:3]
+    entries = texts.entries(texts.shipped())[:3]
     cause = NS(id="zeta-branch", title="The branch of the root", title_cs="Větev odmocniny", kind="range of validity",
                note="Holds on the first half-period only.", note_cs="Platí jen na první půlperiodě.")
 

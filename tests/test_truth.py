@@ -103,7 +103,7 @@ def test_branch_is_cleared_on_the_rising_quarter(eid, outcomes):
 def test_the_plus_root_fails_on_the_descending_half_swing(eid):
     """The branch matters: on the descending half-swing (0 < Ωt < 2K) the printed + root is
     refuted, so clearing it names the branch it holds on."""
-    texts.active()
+    texts.activate(texts.shipped())
     from derivations.pendulum.exact_period import _K
 
     e = texts.entry(eid)
@@ -123,7 +123,7 @@ def test_round_significant_is_exact():
 
 
 def _sides(eid, w):
-    texts.active()
+    texts.activate(texts.shipped())
     der = REGISTRY[eid]
     defs = der.domain.definition_map(texts.entry(eid).symbols)
     for claim in claims_for(texts.entry(eid).relations(), der, derived(eid)):
@@ -267,7 +267,7 @@ FAST = Options(points=6, symbolic=False, certify=False)
 def test_guard_registered_erratum_must_be_refuted(monkeypatch):
     """An erratum registered for an entry whose print is right does not stand."""
     e = texts.entry("pendulum:55")
-    fake = errata.Erratum(e.id, "sign", e.printed_text, e.latex, "n", ("c",))
+    fake = errata.Erratum(e.id, "sign", e.printed_text, e.latex, "n", ("c",), symbols=e.symbols)
     _with_registry(monkeypatch, {e.id: fake}, {})
     o = run.verify_entry(e, FAST)
     assert o.status == "unexpected" and "not refuted" in o.problems[0]
@@ -275,7 +275,8 @@ def test_guard_registered_erratum_must_be_refuted(monkeypatch):
 
 def test_guard_the_correction_must_verify(monkeypatch):
     e = texts.entry("pendulum:equation-of-motion")
-    fake = errata.Erratum(e.id, "derivative order", e.printed_text, e.latex, "n", ("c",))  # "corrects" to the print
+    fake = errata.Erratum(e.id, "derivative order", e.printed_text, e.latex, "n", ("c",),
+                          symbols=e.symbols)  # "corrects" to the print
     _with_registry(monkeypatch, {e.id: fake}, {})
     o = run.verify_entry(e, FAST)
     assert o.status == "unexpected" and any("corrected form is refuted" in p for p in o.problems)

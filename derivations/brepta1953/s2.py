@@ -61,13 +61,13 @@ def newton() -> sp.Matrix:
     return m * acceleration() + S * E_RHO + R * drag_direction()
 
 
-@derives("brepta1953:1", uses=("brepta1953:radial-acceleration",), unknowns=(D(rho, 2),))
+@derives("brepta1953:1", unknowns=(D(rho, 2),))
 def radial_equation():
     """m(ρ̈ − ρψ̇²) = −S − R sin α: Newton's law along e_ρ."""
     return sp.Eq(sp.simplify(newton().dot(E_RHO)), 0)
 
 
-@derives("brepta1953:2", uses=("brepta1953:transverse-acceleration-compact",), unknowns=(D(psi, 2),))
+@derives("brepta1953:2", unknowns=(D(psi, 2),))
 def transverse_equation():
     """(m/ρ) d/dt(ρ²ψ̇) = −R cos α: Newton's law along e_τ."""
     return sp.Eq(sp.simplify(newton().dot(E_TAU)), 0)
@@ -91,7 +91,7 @@ def transverse_substituted():
     return transverse_with_cos_alpha()
 
 
-@derives("brepta1953:2-divided", uses=("brepta1953:2-substituted",), unknowns=(D(psi, 2),))
+@derives("brepta1953:2-divided", uses=("brepta1953:2", "brepta1953:cos-alpha"), unknowns=(D(psi, 2),))
 def transverse_divided():
     """m/(ρ²ψ̇) d/dt(ρ²ψ̇) = −R/v: (2) divided by ρψ̇."""
     eq = transverse_with_cos_alpha()
@@ -130,7 +130,7 @@ def linear_drag_ode():
     return law3_with(derived("brepta1953:linear-drag-law"))
 
 
-@derives("brepta1953:linear-drag-separated", uses=("brepta1953:linear-drag-ode",), unknowns=(D(psi, 2),))
+@derives("brepta1953:linear-drag-separated", uses=("brepta1953:3", "brepta1953:linear-drag-law"), unknowns=(D(psi, 2),))
 def linear_drag_separated():
     """d ln(ρ²ψ̇) = −2κ dt, i.e. d/dt ln(ρ²ψ̇) = −2κ."""
     return law3_with(derived("brepta1953:linear-drag-law"))
@@ -143,19 +143,19 @@ def angular_momentum_solution(rate: sp.Expr, var: sp.Symbol, const: sp.Symbol) -
     return sol.rhs
 
 
-@derives("brepta1953:linear-drag-integrated", uses=("brepta1953:linear-drag-separated",), unknowns=(A,))
+@derives("brepta1953:linear-drag-integrated", unknowns=(A,))
 def linear_drag_integrated():
     """ln(ρ²ψ̇) = −2κt + ln A, with A = ρ²ψ̇ at t = 0."""
     return sp.Eq(sp.log(ANGULAR_MOMENTUM), sp.expand_log(sp.log(angular_momentum_solution(-2 * kappa, t, A)), force=True))
 
 
-@derives("brepta1953:4", uses=("brepta1953:linear-drag-separated",), unknowns=(D(psi),))
+@derives("brepta1953:4", unknowns=(D(psi),))
 def angular_momentum_linear():
     """ρ²ψ̇ = A e^{−2κt}: the angular momentum decays exponentially, whatever the law of S."""
     return sp.Eq(ANGULAR_MOMENTUM, angular_momentum_solution(-2 * kappa, t, A))
 
 
-@derives("brepta1953:no-drag-condition", mode="condition", uses=("brepta1953:2", "brepta1953:linear-drag-law"))
+@derives("brepta1953:no-drag-condition", mode="condition", uses=("brepta1953:linear-drag-law",))
 def no_drag_condition():
     """The torque −R cos α of (2), with R = 2κmv, must vanish for the central-motion law."""
     return -derived("brepta1953:linear-drag-law").rhs * sp.cos(alpha)
@@ -181,7 +181,7 @@ def arc_length_rate():
     return sp.Eq(D(s), sp.sqrt(sp.simplify(position().diff(t).dot(position().diff(t)))))
 
 
-@derives("brepta1953:quadratic-drag-separated-ds", uses=("brepta1953:quadratic-drag-ode", "brepta1953:arc-length-rate"),
+@derives("brepta1953:quadratic-drag-separated-ds", uses=("brepta1953:quadratic-drag-ode",),
          unknowns=(D(psi, 2),))
 def quadratic_drag_ds():
     """d ln(ρ²ψ̇) = −β ds, with v dt = ds."""
@@ -189,7 +189,7 @@ def quadratic_drag_ds():
     return sp.Eq(eq.lhs.subs(v, D(s)), 0)
 
 
-@derives("brepta1953:quadratic-drag-integrated", uses=("brepta1953:quadratic-drag-separated-ds",), unknowns=(B,))
+@derives("brepta1953:quadratic-drag-integrated", unknowns=(B,))
 def quadratic_drag_integrated():
     """ln(ρ²ψ̇) = −βs + ln B: the law integrates in the arc length s, with B = ρ²ψ̇ at s = 0."""
     ssym = sp.Symbol("s_", nonnegative=True)
@@ -197,7 +197,7 @@ def quadratic_drag_integrated():
     return sp.Eq(sp.log(ANGULAR_MOMENTUM), sp.expand_log(sp.log(sol), force=True))
 
 
-@derives("brepta1953:5", uses=("brepta1953:quadratic-drag-integrated",), unknowns=(D(psi),))
+@derives("brepta1953:5", unknowns=(D(psi),))
 def angular_momentum_quadratic():
     """ρ²ψ̇ = B e^{−βs}."""
     ssym = sp.Symbol("s_", nonnegative=True)

@@ -129,7 +129,7 @@ def small_equation_psi():
     return small_motion_jets()
 
 
-@derives("brepta1953:10", uses=("brepta1953:9",), unknowns=(C,))
+@derives("brepta1953:10", uses=("brepta1953:7",), unknowns=(C,))
 def small_integral_psi():
     """φ²ψ̇ = C: (9) integrated once; C is the value of φ²ψ̇ at t = 0."""
     q = small_angular_momentum()
@@ -201,7 +201,7 @@ def period_and_frequency():
     return [sp.Eq(Tper, oscillator_period()), sp.Eq(Omega**2, oscillator_frequency() ** 2)]
 
 
-@derives("brepta1953:13", uses=("brepta1953:period-and-frequency",), unknowns=(Tper,))
+@derives("brepta1953:13", uses=("brepta1953:12",), unknowns=(Tper,))
 def period():
     """T = 2π √(l/g)."""
     return sp.Eq(Tper, sp.powsimp(sp.simplify(oscillator_period()), force=True))

@@ -114,16 +114,14 @@ def rewritten(eid: str) -> sp.Eq:
 
 
 @derives("brepta1953:rewritten-x", unknowns=(D(x, 2),),
-         uses=("brepta1953:14", "brepta1953:pendulum-central-force", "brepta1953:linear-drag-law",
-               "brepta1953:psi-components", "brepta1953:alpha-components"))
+         uses=("brepta1953:14", "brepta1953:linear-drag-law", "brepta1953:pendulum-central-force"))
 def rewritten_x():
     """m ẍ = −m(g/l)ρ·x/ρ − 2κmv·v_x/v."""
     return rewritten("brepta1953:14")
 
 
 @derives("brepta1953:rewritten-y", unknowns=(D(y, 2),),
-         uses=("brepta1953:15", "brepta1953:pendulum-central-force", "brepta1953:linear-drag-law",
-               "brepta1953:psi-components", "brepta1953:alpha-components"))
+         uses=("brepta1953:15", "brepta1953:linear-drag-law", "brepta1953:pendulum-central-force"))
 def rewritten_y():
     """m ÿ = −m(g/l)ρ·y/ρ − 2κmv·v_y/v."""
     return rewritten("brepta1953:15")
@@ -183,7 +181,7 @@ def characteristic_equation():
     return sp.Eq(characteristic_polynomial(), 0)
 
 
-@derives("brepta1953:characteristic-roots", uses=("brepta1953:characteristic-equation",), unknowns=(lam, lam))
+@derives("brepta1953:characteristic-roots", uses=("brepta1953:16", "brepta1953:17"), unknowns=(lam, lam))
 def characteristic_roots():
     """λ₁,₂ = −κ ± √(κ² − Ω²) (λ₁ the larger root where they are real)."""
     roots = sp.solve(characteristic_polynomial(), lam)
@@ -226,7 +224,7 @@ def relabel(sol: sp.Expr, basis: tuple, names: tuple) -> sp.Expr:
     return sol.xreplace(mapping)
 
 
-@derives("brepta1953:18", uses=("brepta1953:16", "brepta1953:17", "brepta1953:omega-definition"),
+@derives("brepta1953:18", uses=("brepta1953:16", "brepta1953:17"),
          unknowns=(x, y), domain=SMALL_DAMPING)
 def general_solution():
     """x = e^{−κt}(K sin ωt + L cos ωt), y = e^{−κt}(M sin ωt + N cos ωt): dsolve of (16), (17)."""
@@ -257,7 +255,7 @@ def solution_at_zero() -> tuple[sp.Expr, sp.Expr]:
     return x18.subs(t, 0), y18.subs(t, 0)
 
 
-@derives("brepta1953:initial-constants", uses=("brepta1953:18", "brepta1953:linear-initial-conditions"),
+@derives("brepta1953:initial-constants", uses=("brepta1953:18",),
          unknowns=(L1, N1))
 def initial_constants():
     """L = R0, N = 0: (18) at t = 0 equated to the initial position."""
@@ -294,7 +292,7 @@ def initial_velocity():
     return [sp.Eq(VX0, vel[0]), sp.Eq(VY0, vel[1])]
 
 
-@derives("brepta1953:constant-K", uses=("brepta1953:dx-dt", "brepta1953:initial-velocity"),
+@derives("brepta1953:constant-K", uses=("brepta1953:dx-dt",),
          unknowns=(K1,), domain=SMALL_DAMPING)
 def constant_K():
     """0 = −κR0 + ωK, so K = R0κ/ω: ẋ(0) = 0 (each printed form of K is compared with it)."""
@@ -302,7 +300,7 @@ def constant_K():
     return sp.Eq(K1, sp.solve(derived("brepta1953:dx-dt").rhs.subs(t, 0) - vel[0], K1)[0])
 
 
-@derives("brepta1953:constant-M", uses=("brepta1953:dy-dt", "brepta1953:initial-velocity"),
+@derives("brepta1953:constant-M", uses=("brepta1953:dy-dt",),
          unknowns=(M1,), domain=SMALL_DAMPING)
 def constant_M():
     """v0 = ωM, so M = v0/ω: ẏ(0) = v0 (each printed form of M is compared with it)."""
@@ -315,8 +313,7 @@ def initial_value_ics(coord: sp.Expr, index: int) -> dict:
     return {coord.subs(t, 0): pos[index], coord.diff(t).subs(t, 0): vel[index]}
 
 
-@derives("brepta1953:19", uses=("brepta1953:16", "brepta1953:17", "brepta1953:linear-initial-conditions",
-                                "brepta1953:initial-velocity"), unknowns=(x, y), domain=SMALL_DAMPING)
+@derives("brepta1953:19", uses=("brepta1953:16", "brepta1953:17"), unknowns=(x, y), domain=SMALL_DAMPING)
 def particular_solution():
     """x = (R0/ω)e^{−κt}(κ sin ωt + ω cos ωt), y = (v0/ω)e^{−κt} sin ωt: dsolve with fig. 6's data."""
     return [sp.Eq(x, damped_solution(x, "brepta1953:16", initial_value_ics(x, 0))),
@@ -351,7 +348,7 @@ def eliminate_time_small_damping() -> sp.Eq:
     return sp.Eq(lhs, R0 * v0 * sp.exp(-kappa / omega * angle))
 
 
-@derives("brepta1953:undamped-ellipse", uses=("brepta1953:20",), unknowns=(y**2,))
+@derives("brepta1953:undamped-ellipse", uses=("brepta1953:19",), unknowns=(y**2,))
 def undamped_ellipse():
     """y²/(v0²/Ω²) + x²/R0² = 1: the trajectory (20) at κ = 0 (ω = Ω), squared."""
     rel = eliminate_time_small_damping()
@@ -366,7 +363,7 @@ def discriminant() -> sp.Expr:
     return sp.discriminant(characteristic_polynomial(), lam)
 
 
-@derives("brepta1953:critical-condition", mode="condition", uses=("brepta1953:characteristic-equation",))
+@derives("brepta1953:critical-condition", mode="condition", uses=("brepta1953:16", "brepta1953:17"))
 def critical_condition():
     """κ = Ω: the discriminant 4(κ² − Ω²) of the characteristic equation vanishes (double root)."""
     return discriminant()
@@ -379,7 +376,7 @@ def critical_kappa() -> sp.Expr:
 
 
 @derives("brepta1953:critical-double-root", unknowns=(lam,),
-         uses=("brepta1953:characteristic-equation", "brepta1953:critical-condition"))
+         uses=("brepta1953:16", "brepta1953:17"))
 def critical_double_root():
     """λ₁,₂ = −κ at κ = Ω."""
     omega_c = sp.solve(sp.Eq(critical_kappa(), kappa), Omega)[0]
@@ -396,7 +393,7 @@ def critical_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.E
 
 
 @derives("brepta1953:critical-general-solution", unknowns=(x, y),
-         uses=("brepta1953:16", "brepta1953:17", "brepta1953:critical-double-root"))
+         uses=("brepta1953:16", "brepta1953:17"))
 def critical_general_solution():
     """x = e^{−κt}(A + Bt), y = e^{−κt}(C + Dt): dsolve of (16), (17) at κ = Ω."""
     basis = (sp.exp(-kappa * t), t * sp.exp(-kappa * t))
@@ -420,23 +417,21 @@ def critical_constants() -> dict:
     return sp.solve(eqs, [A, B, C, D_], dict=True)[0]
 
 
-@derives("brepta1953:critical-constants-AC", uses=("brepta1953:critical-general-solution",
-                                                   "brepta1953:critical-initial-conditions"), unknowns=(A, C))
+@derives("brepta1953:critical-constants-AC", uses=("brepta1953:critical-general-solution",), unknowns=(A, C))
 def critical_constants_AC():
     """A = R0, C = 0: the initial position."""
     sol = critical_constants()
     return [sp.Eq(A, sol[A]), sp.Eq(C, sol[C])]
 
 
-@derives("brepta1953:critical-constants-BD", uses=("brepta1953:critical-general-solution",
-                                                   "brepta1953:critical-initial-conditions"), unknowns=(B, D_))
+@derives("brepta1953:critical-constants-BD", uses=("brepta1953:critical-general-solution",), unknowns=(B, D_))
 def critical_constants_BD():
     """B = R0κ, D = v0: the initial velocity."""
     sol = critical_constants()
     return [sp.Eq(B, sol[B]), sp.Eq(D_, sol[D_])]
 
 
-@derives("brepta1953:21", uses=("brepta1953:16", "brepta1953:17", "brepta1953:critical-initial-conditions"),
+@derives("brepta1953:21", uses=("brepta1953:16", "brepta1953:17"),
          unknowns=(x, y), domain=CRITICAL)
 def critical_particular_solution():
     """x = R0e^{−κt}(1 + κt), y = v0 t e^{−κt}: dsolve at κ = Ω with fig. 6's data."""
@@ -482,7 +477,7 @@ def example_fig7():
             sp.Eq(omega, omega_def), sp.Eq(omega, omega_val), sp.Eq(omega, round_half_up(omega_val, 3))]
 
 
-@derives("brepta1953:example-fig8", uses=("brepta1953:critical-condition",), unknowns=(Omega, R0, kappa, v0))
+@derives("brepta1953:example-fig8", uses=("brepta1953:16", "brepta1953:17"), unknowns=(Omega, R0, kappa, v0))
 def example_fig8():
     """Ω = √10, R0 = v0 = 0.1 (the figure's data) and κ = √10: the critical κ = Ω of (21), (22)."""
     kc = critical_kappa().subs(FIG8_GIVEN)

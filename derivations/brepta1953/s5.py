@@ -119,7 +119,7 @@ def cartesian_moment() -> sp.Expr:
 
 
 @derives("brepta1953:23", mode="substitute",
-         uses=("brepta1953:moment-combination", "brepta1953:5"))
+         uses=("brepta1953:5", "brepta1953:a_x-equation", "brepta1953:a_y-equation"))
 def moment_law_quadratic():
     """a_x ẏ − a_y ẋ = −(g/l) B e^{−βs}: the moment xẏ − yẋ = ρ²ψ̇ obeys (5), ρ²ψ̇ = B e^{−βs}
     (s the arc length).  Model: a_x, a_y from the equations of motion and B solved from (5)."""
@@ -181,14 +181,14 @@ def initial_values() -> list:
     return [r.rhs for r in derived("brepta1953:initial-conditions")]
 
 
-@derives("brepta1953:24", uses=("brepta1953:initial-conditions",), unknowns=(x,))
+@derives("brepta1953:24", uses=("brepta1953:Omega-definition", "brepta1953:initial-conditions"), unknowns=(x,))
 def ideal_x():
     """x = R₀ cos Ωt (x(0) = R₀, ẋ(0) = 0)."""
     x0, _, xd0, _ = initial_values()
     return sp.Eq(x, undamped(xd0 / Omega, x0))
 
 
-@derives("brepta1953:25", uses=("brepta1953:initial-conditions",), unknowns=(y,))
+@derives("brepta1953:25", uses=("brepta1953:Omega-definition", "brepta1953:initial-conditions"), unknowns=(y,))
 def ideal_y():
     """y = (v₀/Ω) sin Ωt (y(0) = 0, ẏ(0) = v₀)."""
     _, y0, _, yd0 = initial_values()
@@ -236,13 +236,13 @@ def equation_of_motion(i: int) -> sp.Eq:
     return sp.Eq((D(x, 2), D(y, 2))[i], sp.expand(a))
 
 
-@derives("brepta1953:26", uses=("brepta1953:a_x-equation", "brepta1953:speed"), unknowns=(D(x, 2),))
+@derives("brepta1953:26", uses=("brepta1953:quadratic-drag-law",), unknowns=(D(x, 2),))
 def eq26():
     """ẍ = −Ω²x − βẋ √(ẋ² + ẏ²)."""
     return equation_of_motion(0)
 
 
-@derives("brepta1953:27", uses=("brepta1953:a_y-equation", "brepta1953:speed"), unknowns=(D(y, 2),))
+@derives("brepta1953:27", uses=("brepta1953:quadratic-drag-law",), unknowns=(D(y, 2),))
 def eq27():
     """ÿ = −Ω²y − βẏ √(ẋ² + ẏ²)."""
     return equation_of_motion(1)
@@ -349,7 +349,7 @@ def integrate_by_speed(rate: sp.Expr) -> sp.Expr:
     return H
 
 
-@derives("brepta1953:A-integral", uses=("brepta1953:AB-variation",), unknowns=(A_sym,))
+@derives("brepta1953:A-integral", uses=("brepta1953:AB-variation", "brepta1953:ideal-velocities"), unknowns=(A_sym,))
 def a_integral():
     """A = βR₀/(3Ω(R₀²Ω² − v₀²)) [R₀²Ω² − (R₀²Ω² − v₀²) cos² Ωt]^{3/2} + C₁:
     A' = βR₀ sin Ωt cos Ωt V = βR₀/(2Ω(R₀²Ω² − v₀²)) √W dW/dt, W = V²."""
@@ -357,7 +357,7 @@ def a_integral():
     return sp.Eq(A_sym, integrate_by_speed(Ap) + C1)
 
 
-@derives("brepta1953:D-integral", uses=("brepta1953:CD-variation",), unknowns=(D_,))
+@derives("brepta1953:D-integral", uses=("brepta1953:CD-variation", "brepta1953:ideal-velocities"), unknowns=(D_,))
 def d_integral():
     """D = βv₀/(3Ω²(u² − v₀²)) [u² − (u² − v₀²) cos² Ωt]^{3/2} + C₄ (same substitution)."""
     _, Dp = varied_rates(1)
@@ -370,14 +370,14 @@ def t_integral(rate: sp.Expr) -> sp.Expr:
     return c * sp.Integral(f, (t, 0, t))
 
 
-@derives("brepta1953:B-integral-t", uses=("brepta1953:AB-variation",), unknowns=(B_sym,))
+@derives("brepta1953:B-integral-t", uses=("brepta1953:AB-variation", "brepta1953:ideal-velocities"), unknowns=(B_sym,))
 def b_integral_t():
     """B = −βR₀ ∫₀ᵗ sin² Ωt √(R₀²Ω² − (R₀²Ω² − v₀²) cos² Ωt) dt + C₂ (B' = −f sin Ωt/Ω; B(0) = C₂)."""
     _, Bp = varied_rates(0)
     return sp.Eq(B_sym, t_integral(Bp) + C2)
 
 
-@derives("brepta1953:C-integral-t", uses=("brepta1953:CD-variation",), unknowns=(C_sym,))
+@derives("brepta1953:C-integral-t", uses=("brepta1953:CD-variation", "brepta1953:ideal-velocities"), unknowns=(C_sym,))
 def c_integral_t():
     """C = −(βv₀/Ω) ∫₀ᵗ cos² Ωt √(u² − (u² − v₀²) cos² Ωt) dt + C₃ (C' = f_y cos Ωt/Ω)."""
     Cp, _ = varied_rates(1)
@@ -413,7 +413,7 @@ def to_amplitude(expr: sp.Expr, upper: sp.Expr | None = None) -> sp.Expr:
     return expr.replace(lambda e: isinstance(e, sp.Integral), change)
 
 
-@derives("brepta1953:B-integral-z", uses=("brepta1953:B-integral-t", "brepta1953:substitution-theta-z"),
+@derives("brepta1953:B-integral-z", uses=("brepta1953:B-integral-t",),
          unknowns=(B_sym,), domain=Z_DOMAIN)
 def b_integral_z():
     """B = (βR₀/Ω) ∫_{π/2}^{z} cos² z √(u² − (u² − v₀²) sin² z) dz + C₂ (t = (π/2 − z)/Ω)."""
@@ -466,8 +466,7 @@ def b_integral_k():
     return sp.Eq(B_sym, modulus_form(derived("brepta1953:B-integral-z").rhs))
 
 
-@derives("brepta1953:C-integral-z", uses=("brepta1953:C-integral-t", "brepta1953:substitution-theta-z",
-                                        "brepta1953:k2-definition-C"),
+@derives("brepta1953:C-integral-z", uses=("brepta1953:C-integral-t", "brepta1953:k2-definition"),
          unknowns=(C_sym,), domain=Z_K_DOMAIN)
 def c_integral_z():
     """C = (βv₀u/Ω²) ∫_{π/2}^{z} sin² z √(1 − k² sin² z) dz + C₃ (t = (π/2 − z)/Ω, then k²)."""
@@ -600,8 +599,7 @@ def c_steps() -> dict[str, sp.Expr]:
     return {"zeta": whole, "split": split, "split-limits": split_limits(split)}
 
 
-@derives("brepta1953:B-integral-zeta", uses=("brepta1953:B-integral-k", "brepta1953:substitution-zeta",
-                                           "brepta1953:29"),
+@derives("brepta1953:B-integral-zeta", uses=("brepta1953:B-integral-k",),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_integral_zeta():
     """B = (βR₀u/Ω) ∫_{π/2}^{z} cos² z Δ dz + C₂ with z = π/2 − Ωt over the whole motion (in closed
@@ -610,7 +608,7 @@ def b_integral_zeta():
     return sp.Eq(B_sym, closed(b_steps()["zeta"]))
 
 
-@derives("brepta1953:B-integral-denominator", uses=("brepta1953:B-integral-zeta",),
+@derives("brepta1953:B-integral-denominator", uses=("brepta1953:B-integral-k",),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_integral_denominator():
     """The same B: moving the root to the denominator, cos² z Δ = cos² z Δ²/Δ, changes nothing."""
@@ -620,7 +618,7 @@ def b_integral_denominator():
     return sp.Eq(B_sym, closed(pre * sp.Integral(moved, (var, lo, hi)) + C2))
 
 
-@derives("brepta1953:B-split", uses=("brepta1953:B-integral-denominator", "brepta1953:u-definition"),
+@derives("brepta1953:B-split", uses=("brepta1953:B-integral-k",),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_split():
     """B = βR₀² {∫ dz/Δ − (1+k²) ∫ sin² z dz/Δ + k² ∫ sin⁴ z dz/Δ} + C₂, from π/2 to π/2 − Ωt:
@@ -628,14 +626,14 @@ def b_split():
     return sp.Eq(B_sym, closed(b_steps()["split"]))
 
 
-@derives("brepta1953:B-split-limits", uses=("brepta1953:B-split",),
+@derives("brepta1953:B-split-limits", uses=("brepta1953:B-integral-k",),
          unknowns=(B_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def b_split_limits():
     """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (each in closed form)."""
     return sp.Eq(B_sym, closed(b_steps()["split-limits"]))
 
 
-@derives("brepta1953:integral-limits", mode="substitute", uses=("brepta1953:B-split",))
+@derives("brepta1953:integral-limits", mode="substitute")
 def integral_limits():
     """∫₁^ζ = ∫₁⁰ + ∫₀^ζ = ∫₀^ζ − ∫₀¹ (additivity), applied to the integrand of B-split,
     f(ζ) = (1 − (1+k²)ζ² + k²ζ⁴)/√((1−ζ²)(1−k²ζ²))."""
@@ -644,8 +642,7 @@ def integral_limits():
     return {f(zeta): (1 - (1 + k**2) * zeta**2 + k**2 * zeta**4) / R_}
 
 
-@derives("brepta1953:C-integral-zeta", uses=("brepta1953:C-integral-z", "brepta1953:substitution-zeta-C",
-                                           "brepta1953:29"),
+@derives("brepta1953:C-integral-zeta", uses=("brepta1953:C-integral-z",),
          unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def c_integral_zeta():
     """C = (βv₀u/Ω²) ∫_{π/2}^{z} sin² z Δ dz + C₃ with z = π/2 − Ωt (closed form); in ζ = sin z
@@ -653,7 +650,7 @@ def c_integral_zeta():
     return sp.Eq(C_sym, closed(c_steps()["zeta"]))
 
 
-@derives("brepta1953:C-split", uses=("brepta1953:C-integral-zeta", "brepta1953:u-definition"),
+@derives("brepta1953:C-split", uses=("brepta1953:C-integral-z",),
          unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def c_split():
     """C = (βv₀R₀/Ω) {∫ sin² z dz/Δ − k² ∫ sin⁴ z dz/Δ} + C₃ (from π/2 to π/2 − Ωt):
@@ -661,7 +658,7 @@ def c_split():
     return sp.Eq(C_sym, closed(c_steps()["split"]))
 
 
-@derives("brepta1953:C-split-limits", uses=("brepta1953:C-split",),
+@derives("brepta1953:C-split-limits", uses=("brepta1953:C-integral-z",),
          unknowns=(C_sym,), domain=ELLIPTIC_ZETA_INTEGRALS)
 def c_split_limits():
     """Each ∫_{π/2}^{Z} = ∫_0^{Z} − ∫_0^{π/2} (each in closed form)."""
@@ -694,7 +691,7 @@ def ec_definition():
     return {}
 
 
-@derives("brepta1953:B-reduced", uses=("brepta1953:B-split-limits",), unknowns=(B_sym,), domain=ELLIPTIC_T)
+@derives("brepta1953:B-reduced", uses=("brepta1953:B-integral-k",), unknowns=(B_sym,), domain=ELLIPTIC_T)
 def b_reduced():
     """B-split with each ∫_{π/2}^{Z} sin^{2j} z dz/Δ reduced to Legendre's F(Z), E(Z), K, E and
     sin Z cos Z Δ(Z) (legendre_antiderivative), Z = π/2 − Ωt; the paper's ζ-form equals this for
@@ -710,7 +707,7 @@ def b_final():
     return sp.Eq(B_sym, closed(amplitude_b()))
 
 
-@derives("brepta1953:C-reduced", uses=("brepta1953:C-split-limits",), unknowns=(C_sym,), domain=ELLIPTIC_T)
+@derives("brepta1953:C-reduced", uses=("brepta1953:C-integral-z",), unknowns=(C_sym,), domain=ELLIPTIC_T)
 def c_reduced():
     """C-split with ∫_{π/2}^{Z} sin² z dz/Δ and ∫ sin⁴ z dz/Δ reduced to F, E, K, E."""
     return sp.Eq(C_sym, closed(c_steps()["split-limits"]))
@@ -766,7 +763,7 @@ def general_constants() -> dict:
     return conditions_at_start(general_x(), general_y())
 
 
-@derives("brepta1953:C2-C4-conditions", uses=("brepta1953:28", "brepta1953:30", "brepta1953:initial-conditions"),
+@derives("brepta1953:C2-C4-conditions", uses=("brepta1953:A-integral", "brepta1953:B-final", "brepta1953:C-final", "brepta1953:D-integral", "brepta1953:initial-conditions"),
          unknowns=(C2, C4), domain=K_ONLY)
 def c2_c4_conditions():
     """x(0) = B(0) = C₂ = R₀ (the elliptic part vanishes at Z = π/2); y(0) = D(0) = 0 gives
@@ -776,13 +773,13 @@ def c2_c4_conditions():
     return [sp.Eq(C2, sp.solve(eqs[0], C2)[0]), sp.Eq(C4, sp.solve(eqs[1], C4)[0])]
 
 
-@derives("brepta1953:C4", uses=("brepta1953:C2-C4-conditions",), unknowns=(C4,))
+@derives("brepta1953:C4", uses=("brepta1953:A-integral", "brepta1953:B-final", "brepta1953:C-final", "brepta1953:D-integral", "brepta1953:initial-conditions"), unknowns=(C4,))
 def c4():
     """C₄ = −βv₀⁴/(3Ω²(u²−v₀²))."""
     return sp.Eq(C4, general_constants()[C4])
 
 
-@derives("brepta1953:dxdt-condition", uses=("brepta1953:28", "brepta1953:initial-conditions"),
+@derives("brepta1953:dxdt-condition", uses=("brepta1953:A-integral", "brepta1953:B-final", "brepta1953:initial-conditions"),
          unknowns=(D(x), C1), domain=K_ONLY)
 def dxdt_condition():
     """ẋ(0) = 0 (the start), and ẋ(0) = ΩA(0) = Ω[βR₀v₀³/(3Ω(u²−v₀²)) + C₁] (B'(0) = 0)."""
@@ -791,13 +788,13 @@ def dxdt_condition():
     return [sp.Eq(D(x), xd0), sp.Eq(C1, sp.solve(sp.Eq(rate, xd0), C1)[0])]
 
 
-@derives("brepta1953:C1", uses=("brepta1953:dxdt-condition",), unknowns=(C1,))
+@derives("brepta1953:C1", uses=("brepta1953:A-integral", "brepta1953:B-final", "brepta1953:C-final", "brepta1953:D-integral", "brepta1953:initial-conditions"), unknowns=(C1,))
 def c1():
     """C₁ = −βR₀v₀³/(3Ω(u²−v₀²))."""
     return sp.Eq(C1, general_constants()[C1])
 
 
-@derives("brepta1953:C3", uses=("brepta1953:30", "brepta1953:initial-conditions"),
+@derives("brepta1953:C3", uses=("brepta1953:A-integral", "brepta1953:B-final", "brepta1953:C-final", "brepta1953:D-integral", "brepta1953:initial-conditions"),
          unknowns=(D(y), C3, C3), domain=K_ONLY)
 def c3():
     """ẏ(0) = v₀ and ẏ(0) = ΩC(0) = ΩC₃ (the elliptic part of C vanishes at t = 0): C₃ = v₀/Ω."""
@@ -807,8 +804,7 @@ def c3():
     return [sp.Eq(D(y), yd0), sp.Eq(C3, value), sp.Eq(C3, general_constants()[C3])]
 
 
-@derives("brepta1953:particular-solution", uses=("brepta1953:28", "brepta1953:30", "brepta1953:C1",
-                                               "brepta1953:C2-C4-conditions", "brepta1953:C3", "brepta1953:C4"),
+@derives("brepta1953:particular-solution", uses=("brepta1953:A-integral", "brepta1953:B-final", "brepta1953:C-final", "brepta1953:D-integral", "brepta1953:initial-conditions"),
          unknowns=(x, y), domain=ELLIPTIC_T)
 def particular_solution():
     """(28), (30) with C₁ … C₄ from the start: x(t), y(t) to first order in β, every t ≥ 0."""
@@ -829,7 +825,7 @@ def conical(expr: sp.Expr) -> sp.Expr:
     return sp.simplify(expr.subs(v0, R0 * Omega))
 
 
-@derives("brepta1953:conical-x", uses=("brepta1953:forced-x", "brepta1953:conical-condition"),
+@derives("brepta1953:conical-x", uses=("brepta1953:forced-x",),
          unknowns=(D(x, 2),), domain=CONICAL)
 def conical_x():
     """ẍ = −Ω²x + βR₀²Ω² sin Ωt (forced-x at v₀ = R₀Ω)."""
@@ -837,7 +833,7 @@ def conical_x():
     return sp.Eq(eq.lhs, conical(eq.rhs))
 
 
-@derives("brepta1953:conical-y", uses=("brepta1953:forced-y", "brepta1953:conical-condition"),
+@derives("brepta1953:conical-y", uses=("brepta1953:forced-y",),
          unknowns=(D(y, 2),), domain=CONICAL)
 def conical_y():
     """ÿ = −Ω²y − βv₀² cos Ωt (forced-y at v₀ = R₀Ω, written with v₀)."""
@@ -856,14 +852,14 @@ def conical_general(i: int) -> sp.Expr:
     return (P + c_sin) * sp.sin(THETA) + (Q + c_cos) * sp.cos(THETA)
 
 
-@derives("brepta1953:31", uses=("brepta1953:conical-x", "brepta1953:AB-variation"), unknowns=(x,),
+@derives("brepta1953:31", uses=("brepta1953:AB-variation", "brepta1953:ideal-velocities"), unknowns=(x,),
          domain=CONICAL)
 def eq31():
     """x = (βR₀²/2 sin² Ωt + C₁) sin Ωt + [βR₀²(¼ sin 2Ωt − Ωt/2) + C₂] cos Ωt."""
     return sp.Eq(x, conical_general(0))
 
 
-@derives("brepta1953:32", uses=("brepta1953:conical-y", "brepta1953:CD-variation"), unknowns=(y,),
+@derives("brepta1953:32", uses=("brepta1953:CD-variation", "brepta1953:ideal-velocities"), unknowns=(y,),
          domain=CONICAL)
 def eq32():
     """y = [−βv₀²/Ω² (Ωt/2 + ¼ sin 2Ωt) + C₃] sin Ωt + (βv₀²/(2Ω²) sin² Ωt + C₄) cos Ωt."""
@@ -874,7 +870,7 @@ def conical_constants() -> dict:
     return conditions_at_start(conical_general(0), conical_general(1))
 
 
-@derives("brepta1953:conical-C2-C4", uses=("brepta1953:31", "brepta1953:32", "brepta1953:initial-conditions-conical"),
+@derives("brepta1953:conical-C2-C4", uses=("brepta1953:AB-variation", "brepta1953:CD-variation", "brepta1953:ideal-velocities", "brepta1953:initial-conditions"),
          unknowns=(C2, C4), domain=CONICAL)
 def conical_c2_c4():
     """x(0) = C₂ = R₀, y(0) = C₄ = 0."""
@@ -882,7 +878,7 @@ def conical_c2_c4():
     return [sp.Eq(C2, consts[C2]), sp.Eq(C4, consts[C4])]
 
 
-@derives("brepta1953:conical-C1-C3", uses=("brepta1953:31", "brepta1953:32", "brepta1953:initial-conditions-conical"),
+@derives("brepta1953:conical-C1-C3", uses=("brepta1953:AB-variation", "brepta1953:CD-variation", "brepta1953:ideal-velocities", "brepta1953:initial-conditions"),
          unknowns=(C1, C1, C3, C3), domain=CONICAL)
 def conical_c1_c3():
     """ẋ(0) = ΩC₁ = 0 → C₁ = 0; ẏ(0) = ΩC₃ = v₀ → C₃ = v₀/Ω."""
@@ -898,7 +894,7 @@ def conical_particular() -> tuple[sp.Expr, sp.Expr]:
     return conical_general(0).subs(consts), conical_general(1).subs(consts)
 
 
-@derives("brepta1953:conical-particular-solution", uses=("brepta1953:conical-C2-C4", "brepta1953:conical-C1-C3"),
+@derives("brepta1953:conical-particular-solution", uses=("brepta1953:AB-variation", "brepta1953:CD-variation", "brepta1953:ideal-velocities", "brepta1953:initial-conditions"),
          unknowns=(x, y), domain=CONICAL)
 def conical_particular_solution():
     """x = R₀ cos Ωt + βR₀²(¼ sin 2Ωt − Ωt/2) cos Ωt + βR₀²/2 sin³ Ωt,
@@ -907,7 +903,7 @@ def conical_particular_solution():
     return [sp.Eq(x, xp), sp.Eq(y, yp)]
 
 
-@derives("brepta1953:33", mode="substitute", uses=("brepta1953:conical-particular-solution",),
+@derives("brepta1953:33", mode="substitute", uses=("brepta1953:AB-variation", "brepta1953:CD-variation", "brepta1953:ideal-velocities", "brepta1953:initial-conditions"),
          domain=CONICAL)
 def after_one_turn():
     """x(2π/Ω) = R₀ − πβR₀² =: R₁: the conical particular x after one revolution (only the secular

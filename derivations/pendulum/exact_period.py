@@ -217,8 +217,7 @@ def on_motion(expr: sp.Expr) -> sp.Expr:
 
 
 # --- energy (49)–(51) and the prose ----------------------------------------------------------
-@derives("pendulum:49", mode="substitute",
-         uses=("pendulum:kinetic-energy", "pendulum:potential-energy", "pendulum:total-energy"))
+@derives("pendulum:49", mode="substitute")
 def conservation_of_energy():
     """T + V = E = const: E is the energy function h = φ̇∂L/∂φ̇ − L, its constant the value at
     t = 0; every side is evaluated along the exact motion."""
@@ -239,19 +238,19 @@ def potential_energy():
     return {V_pot: potential(), Y: position()[1]}
 
 
-@derives("pendulum:total-energy", uses=("pendulum:49",))
+@derives("pendulum:total-energy")
 def total_energy():
     """E = h(φ0, φ̇ = 0) = −mgl cos φ0: the bob is released from rest at φ0."""
     return sp.Eq(E_tot, initial_value(energy_function()))
 
 
-@derives("pendulum:50", mode="substitute", uses=("pendulum:49", "pendulum:total-energy"))
+@derives("pendulum:50", mode="substitute")
 def energy_equation():
     """½ml²φ̇² − mgl cos φ = −mgl cos φ0: h along the exact motion keeps its initial value."""
     return {phi: exact_motion()}
 
 
-@derives("pendulum:51", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:50",))
+@derives("pendulum:51", mode="substitute", domain=RISING_QUARTER)
 def angular_velocity():
     """φ̇ along the exact motion, on the text's stated branch (the rising quarter-swing).  Its
     magnitude is √(2(g/l)(cos φ − cos φ0)) by (50); its sign is that of cn(Ωt + K): positive on
@@ -269,26 +268,26 @@ def every_state_of_a_motion():
     return {D(phi, 2): acceleration()}
 
 
-@derives("pendulum:energy-first-integral", mode="substitute", uses=("pendulum:energy-derivative-sum",))
+@derives("pendulum:energy-first-integral", mode="substitute")
 def energy_first_integral():
     """H = 2h/(ml²) = φ̇² − (2g/l) cos φ is constant along the exact motion; the constant is its
     value at t = 0, −(2g/l) cos φ0."""
     return {phi: exact_motion(), Cst: initial_value(first_integral())}
 
 
-@derives("pendulum:51-repeated", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:energy-first-integral",))
+@derives("pendulum:51-repeated", mode="substitute", domain=RISING_QUARTER)
 def angular_velocity_repeated():
     """φ̇ along the exact motion on the rising quarter-swing (as for (51))."""
     return {phi: exact_motion()}
 
 
-@derives("pendulum:separated-velocity", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:51",))
+@derives("pendulum:separated-velocity", mode="substitute", domain=RISING_QUARTER)
 def separated_velocity():
     """dφ/dt along the exact motion on the rising quarter-swing (as for (51))."""
     return {phi: exact_motion()}
 
 
-@derives("pendulum:52", mode="substitute", domain=RISING_QUARTER, uses=("pendulum:separated-velocity",))
+@derives("pendulum:52", mode="substitute", domain=RISING_QUARTER)
 def separated_differentials():
     """dt/dφ = 1/φ̇ along the exact motion (the differential relation dt = dφ/φ̇), on the rising
     quarter-swing."""
@@ -296,7 +295,7 @@ def separated_differentials():
 
 
 # --- the quarter period and the substitution (53)–(59) ---------------------------------------
-@derives("pendulum:53", uses=("pendulum:52",), unknowns=(Tper,))
+@derives("pendulum:53", unknowns=(Tper,))
 def quarter_period():
     """T/4 = ∫₀^φ0 dφ/φ̇(φ): the time of the rising quarter (φ from 0 to φ0, φ̇ > 0), by
     separation of variables in the first integral; T is four times it by the symmetry of the
@@ -305,7 +304,7 @@ def quarter_period():
     return sp.Eq(Tper, 4 * const * sp.Integral(integrand, (vphi, 0, phi0)))
 
 
-@derives("pendulum:54", mode="expression", domain=ANGLE_RANGE, uses=("pendulum:53",))
+@derives("pendulum:54", mode="expression", domain=ANGLE_RANGE)
 def root_of_integrand():
     """√(cos φ − cos φ0) = √(l/2g)·φ̇(φ): the root left in the integrand of (53)."""
     return sp.sqrt(sp.expand(sp.simplify(l / (2 * g) * angular_speed(vphi) ** 2)))
@@ -383,20 +382,20 @@ def derived_substitution():
     return (sp.Eq(sp.sin(vphi / 2), root),)
 
 
-@derives("pendulum:58", mode="substitute", domain=DIFFERENTIALS, uses=("pendulum:57",))
+@derives("pendulum:58", mode="substitute", domain=DIFFERENTIALS)
 def substitution_differential():
     """dφ = φ'(ψ) dψ with φ(ψ) = 2 asin(sin(φ0/2) sin ψ): the differential of (57), computed."""
     x = angle_of_w()
     return {vphi: x, DVPHI: sp.diff(x, w) * DW}
 
 
-@derives("pendulum:59-derivation", mode="substitute", domain=PSI_ALL, uses=("pendulum:56", "pendulum:57"))
+@derives("pendulum:59-derivation", mode="substitute", domain=PSI_ALL)
 def root_substituted_steps():
     """The chain of (56) with φ = φ(ψ) from (57) substituted."""
     return {vphi: angle_of_w()}
 
 
-@derives("pendulum:59", mode="substitute", domain=PSI_TEXT, uses=("pendulum:59-derivation",))
+@derives("pendulum:59", mode="substitute", domain=PSI_TEXT)
 def root_substituted():
     """√(cos φ − cos φ0) at φ = φ(ψ): √(2 sin²(φ0/2) cos²ψ) = √2 sin(φ0/2)|cos ψ|, which is
     √2 sin(φ0/2) cos ψ on the text's range ψ ∈ (−π/2, π/2)."""
@@ -456,27 +455,27 @@ def period() -> sp.Expr:
     return sp.integrate(f, (w, 0, sp.pi / 2)).subs(kp, KMOD)
 
 
-@derives("pendulum:quarter-period-substituted", mode="substitute", uses=("pendulum:53", "pendulum:58", "pendulum:59"))
+@derives("pendulum:quarter-period-substituted", mode="substitute", uses=("pendulum:cos-half-angle",))
 def quarter_period_substituted():
     """T/4 with (58), (59) substituted: φ in the ψ-integrand is φ(ψ) of (57); T is the derived
     period."""
     return {Tper: period_integral(), vphi: angle_of_w()}
 
 
-@derives("pendulum:quarter-period-cos", mode="substitute", uses=("pendulum:quarter-period-substituted",))
+@derives("pendulum:quarter-period-cos", mode="substitute")
 def quarter_period_cos():
     """T/4 = √(l/g)∫ dψ / cos(φ/2) = √(l/g)∫ dψ/√(1 − sin²(φ/2)), φ = φ(ψ) of (57)."""
     return {Tper: period_integral(), vphi: angle_of_w()}
 
 
-@derives("pendulum:60", uses=("pendulum:quarter-period-cos",))
+@derives("pendulum:60")
 def period_elliptic():
     """T = 4√(l/g) ∫₀^{π/2} dψ/√(1 − sin²(φ0/2) sin²ψ): the integral of the substituted
     integrand (53) → (57)–(59), computed by the chain rule."""
     return sp.Eq(Tper, period_integral())
 
 
-@derives("pendulum:61", mode="substitute", uses=("pendulum:60",))
+@derives("pendulum:61", mode="substitute")
 def elliptic_k_definition():
     """K(k) = ∫₀^{π/2} dψ/√(1 − k² sin²ψ) with the modulus k (Kc(k) = elliptic_k(m = k²)).  A
     definition: the check confronts the printed modulus notation with sympy's elliptic_k(m)."""
@@ -501,7 +500,7 @@ def series_argument() -> sp.Expr:
     return (KMOD * sp.sin(w)) ** 2
 
 
-@derives("pendulum:62", unknowns=(INTEGRAND,), uses=("pendulum:60",))
+@derives("pendulum:62", unknowns=(INTEGRAND,))
 def integrand_series():
     """(1 − X)^(−1/2) = 1 + Σ_{n≥1} a(n) Xⁿ, a(n) = (1/2)_n / n! (the binomial series)."""
     X, _, term = binomial_series()
@@ -514,7 +513,7 @@ def truncated_integrand() -> sp.Expr:
     return ser.truncate(PRINTED_TERMS).removeO().subs(X, series_argument())
 
 
-@derives("pendulum:63", unknowns=(INTEGRAND,), uses=("pendulum:62",))
+@derives("pendulum:63", unknowns=(INTEGRAND,))
 def integrand_series_terms():
     """(1 − X)^(−1/2) ≈ Σ_{n<4} a(n) Xⁿ, truncated where the print truncates."""
     return sp.Eq(INTEGRAND, truncated_integrand())
@@ -561,7 +560,7 @@ def truncated_period() -> sp.Expr:
     return prefactor * total
 
 
-@derives("pendulum:period-series-integral", unknowns=(Tper,), uses=("pendulum:60", "pendulum:63", "pendulum:64"))
+@derives("pendulum:period-series-integral", unknowns=(Tper,))
 def period_series_integral():
     """T ≈ 4√(l/g) ∫₀^{π/2} Σ_{n<4} a(n) (sin(φ0/2) sin ψ)^{2n} dψ: the period integral with
     the integrand replaced by its truncated binomial series."""
@@ -571,13 +570,13 @@ def period_series_integral():
     return sp.Eq(Tper, const * sp.Integral(truncated_integrand(), (w, 0, sp.pi / 2)))
 
 
-@derives("pendulum:65", unknowns=(Tper,), uses=("pendulum:period-series-integral", "pendulum:64"))
+@derives("pendulum:65", unknowns=(Tper,))
 def period_series():
     """T ≈ 4√(l/g) Σ_{n<4} a(n) I(n) sin^{2n}(φ0/2)."""
     return sp.Eq(Tper, truncated_period())
 
 
-@derives("pendulum:66", unknowns=(Tper,), uses=("pendulum:65",))
+@derives("pendulum:66", unknowns=(Tper,))
 def period_series_factored():
     """T ≈ 2π√(l/g) Σ_{n<4} a(n) (2I(n)/π) sin^{2n}(φ0/2): (65) with π/2 taken out."""
     return sp.Eq(Tper, truncated_period())
