@@ -17,6 +17,8 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
+from quasicentral.notation.timelimit import Deadline
+
 
 #: sympy name -> mpmath function.  One table for the whole project.
 def _quad(f, *intervals):
@@ -139,36 +141,29 @@ def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256, s
     of CPU time spent in ball integrals: past it their integrands return NaN balls, so the
     result is simply not finite (flint's integrator cannot be interrupted by an exception).
     CPU time, not wall time, so that the outcome does not depend on the machine's load."""
-    import time
-
     import flint
 
-    global _DEADLINE
-    old, old_deadline = flint.ctx.prec, _DEADLINE
+    old = flint.ctx.prec
     flint.ctx.prec = prec
-    _DEADLINE = time.process_time() + seconds if seconds else None
+    deadline = Deadline.after(seconds)
     try:
-        env = {sym: _acb_exact(val) for sym, val in point.items()}
-        return _arb(expr, env, False)
+        env = {sym: _acb_exact(val, deadline) for sym, val in point.items()}
+        return _arb(expr, env, False, deadline)
     finally:
         flint.ctx.prec = old
-        _DEADLINE = old_deadline
 
 
-_DEADLINE: float | None = None
-
-
-def _acb_exact(val: sp.Expr):
+def _acb_exact(val: sp.Expr, deadline: Deadline):
     import flint
 
     val = sp.nsimplify(val) if not val.is_number else val
     if val.is_Rational:
         return flint.acb(flint.arb(flint.fmpq(int(val.p), int(val.q))))
     # exact expressions of pi, sqrt, … : evaluate rigorously through the same walker
-    return _arb(val, {}, False)
+    return _arb(val, {}, False, deadline)
 
 
-def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch table
+def _arb(e: sp.Basic, env: dict, analytic: bool, deadline: Deadline):  # noqa: C901 - one dispatch table
     import flint
 
     acb = flint.acb
@@ -185,15 +180,15 @@ def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch t
     if isinstance(e, sp.Add):
         out = acb(0)
         for a in e.args:
-            out += _arb(a, env, analytic)
+            out += _arb(a, env, analytic, deadline)
         return out
     if isinstance(e, sp.Mul):
         out = acb(1)
         for a in e.args:
-            out *= _arb(a, env, analytic)
+            out *= _arb(a, env, analytic, deadline)
         return out
     if isinstance(e, sp.Pow):
-        base = _arb(e.base, env, analytic)
+        base = _arb(e.base, env, analytic, deadline)
         ex = e.exp
         if ex.is_Integer:
             return base ** int(ex)
@@ -203,8 +198,8 @@ def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch t
             return 1 / base.sqrt(analytic=analytic)
         if ex.is_Rational:
             return base.sqrt(analytic=analytic) ** int(2 * ex) if (2 * ex).is_Integer else (
-                (base.log(analytic=analytic) * _arb(ex, env, analytic)).exp())
-        return (base.log(analytic=analytic) * _arb(ex, env, analytic)).exp()
+                (base.log(analytic=analytic) * _arb(ex, env, analytic, deadline)).exp())
+        return (base.log(analytic=analytic) * _arb(ex, env, analytic, deadline)).exp()
     unary = {
         sp.sin: lambda a: a.sin(), sp.cos: lambda a: a.cos(), sp.tan: lambda a: a.tan(),
         sp.exp: lambda a: a.exp(), sp.atan: lambda a: a.atan(),
@@ -213,41 +208,39 @@ def _arb(e: sp.Basic, env: dict, analytic: bool):  # noqa: C901 - one dispatch t
         sp.acot: lambda a: (1 / a).atan(),
     }
     if e.func in unary:
-        return unary[e.func](_arb(e.args[0], env, analytic))
+        return unary[e.func](_arb(e.args[0], env, analytic, deadline))
     if isinstance(e, sp.Abs):
-        a = _arb(e.args[0], env, analytic)
+        a = _arb(e.args[0], env, analytic, deadline)
         return acb(a.abs())
     if isinstance(e, sp.elliptic_k):
-        return acb.elliptic_k(_arb(e.args[0], env, analytic))
+        return acb.elliptic_k(_arb(e.args[0], env, analytic, deadline))
     if isinstance(e, sp.elliptic_f):
-        return acb.elliptic_f(_arb(e.args[0], env, analytic), _arb(e.args[1], env, analytic))
+        return acb.elliptic_f(_arb(e.args[0], env, analytic, deadline), _arb(e.args[1], env, analytic, deadline))
     if isinstance(e, sp.elliptic_e):
         if len(e.args) == 1:
-            return acb.elliptic_e(_arb(e.args[0], env, analytic))
-        return acb.elliptic_e_inc(_arb(e.args[0], env, analytic), _arb(e.args[1], env, analytic))
+            return acb.elliptic_e(_arb(e.args[0], env, analytic, deadline))
+        return acb.elliptic_e_inc(_arb(e.args[0], env, analytic, deadline), _arb(e.args[1], env, analytic, deadline))
     if isinstance(e, sp.factorial) and e.args[0].is_Integer:
         return acb(int(sp.factorial(e.args[0])))
     if isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 3:
         var, lo, hi = e.limits[0]
-        a, b = _arb(lo, env, analytic), _arb(hi, env, analytic)
+        a, b = _arb(lo, env, analytic, deadline), _arb(hi, env, analytic, deadline)
         body = e.function
         for end in (a, b):
             # flint's integrator needs the integrand analytic on the whole path: at an integrable
             # endpoint singularity (1/√(1 − ζ²) at ζ = 1) it only returns a non-finite ball, after
             # seconds of subdivision — say so at once instead
             try:
-                finite = _arb(body, {**env, var: end}, False).is_finite()
+                finite = _arb(body, {**env, var: end}, False, deadline).is_finite()
             except ZeroDivisionError:
                 finite = False
             if not finite:
                 raise Unsupported("the integrand is unbounded at an end of the path")
 
         def f(zz, an):
-            import time
-
-            if _DEADLINE is not None and time.process_time() > _DEADLINE:
+            if deadline.expired():
                 return acb("nan")
-            return _arb(body, {**env, var: zz}, an)
+            return _arb(body, {**env, var: zz}, an, deadline)
 
         return acb.integral(f, a, b)
     raise Unsupported(f"no ball evaluation for {e.func.__name__}")
