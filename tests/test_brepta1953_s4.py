@@ -11,7 +11,7 @@ from derivations.brepta1953 import s4 as s4
 from quasicentral.engine import texts
 from quasicentral.engine.checker import Options, check
 from quasicentral.notation.domain import Domain
-from quasicentral.engine.registry import REGISTRY, derived
+from quasicentral.engine.registry import REGISTRY, as_list, derived
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 
@@ -60,7 +60,7 @@ def test_18_solves_16_17_for_every_kappa_and_19_is_18_with_the_constants():
         assert sp.simplify(res) == 0
     consts = {}
     for eid in ("brepta1953:initial-constants", "brepta1953:constant-K", "brepta1953:constant-M"):
-        consts.update({e.lhs: e.rhs for e in derived(eid)})
+        consts.update({e.lhs: e.rhs for e in as_list(derived(eid))})
     assert set(consts) == {K1, L1, M1, N1}
     part = _solution("brepta1953:19")
     for coord in (x, y):

@@ -206,7 +206,7 @@ def test_limit_k_to_zero_is_the_conical_solution():
 
 def test_limit_k_to_zero_symbolically_for_the_closed_B():
     """βR0²{…}(z) of B-final → βR0²(sin 2Ωt/4 − Ωt/2) of (31) as k → 0 (series in k, order k⁰)."""
-    Bclosed = derived("brepta1953:B-final").rhs - sp.Symbol("C_2", real=True)
+    Bclosed = derived("brepta1953:B-final").rhs - S_.C2
     m = sp.Symbol("m", positive=True)
     expr = Bclosed.subs(k, sp.sqrt(m))
     # F(φ|m) = φ + m(φ − sin φ cos φ)/4 + O(m²), E(φ|m) = φ − m(φ − sin φ cos φ)/4 + O(m²),

@@ -58,7 +58,8 @@ def test_every_entry_has_a_derivation():
     texts.activate(texts.shipped())
     missing = [i for i in IDS if i not in REGISTRY]
     assert not missing
-    stray = [i for i in REGISTRY if i not in set(IDS)]
+    shipped = {t.id for t in texts.shipped()}
+    stray = [i for i in REGISTRY if i.split(":")[0] in shipped and i not in set(IDS)]
     assert not stray, "derivations for ids the catalog does not have"
 
 

@@ -45,16 +45,20 @@ def preprocess(latex: str) -> str:
     return text
 
 
-def _atoms_by_name(expr: sp.Basic) -> dict[str, sp.Basic]:
+def _atoms_by_name(expr: sp.Basic, latex_of: dict[str, str]) -> dict[str, sp.Basic]:
+    """The transcription's atoms by the normalised spelling of their name and of the LaTeX the
+    text declares for them (``lam`` is also found as ``\\lambda``)."""
     out: dict[str, sp.Basic] = {}
-    for a in expr.atoms(sp.Symbol) | expr.atoms(sp.core.function.AppliedUndef):
+    for a in sorted(expr.atoms(sp.Symbol) | expr.atoms(sp.core.function.AppliedUndef), key=sp.srepr):
         name = a.func.__name__ if isinstance(a, sp.core.function.AppliedUndef) else a.name
         out.setdefault(_normal(name), a)
+        if name in latex_of:
+            out.setdefault(_normal(preprocess(latex_of[name])), a)
     return out
 
 
-def _translate(parsed: sp.Basic, ours: sp.Basic) -> sp.Basic | None:
-    names = _atoms_by_name(ours)
+def _translate(parsed: sp.Basic, ours: sp.Basic, latex_of: dict[str, str] | None = None) -> sp.Basic | None:
+    names = _atoms_by_name(ours, latex_of or {})
     repl = {}
     for s in parsed.free_symbols:
         key = _normal(s.name)
@@ -112,7 +116,7 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
             return False
         if not isinstance(parsed, sp.Basic):  # lark may hand back an unresolved parse tree
             return False
-        parsed = _translate(parsed, rel)
+        parsed = _translate(parsed, rel, {sp_.name: sp_.latex for sp_ in entry.symbols.specs} if entry.symbols else None)
         if parsed is None:
             return False
         if isinstance(rel, sp.Eq) != isinstance(parsed, sp.Eq):

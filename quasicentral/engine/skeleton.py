@@ -99,13 +99,24 @@ note = "As printed, with a typo: the factor 2 of 2a(x - x0) is missing (see erra
 
 ERRATA_TOML = '''\
 # The errata found in the text: the printed form must come out refuted and `corrected` must
-# verify.  A suspicion that proved right goes into a [[cleared]] table instead.
+# verify.  Each erratum names its root cause(s): one fault that reaches several displays is one
+# cause.  A note quotes numbers only through {{witness}} placeholders, filled from the witness.
+# A suspicion that proved right goes into a [[cleared]] table instead.
+[[cause]]
+id = "factor-two"
+title = "The factor 2 of the work-energy relation is lost"
+title_cs = "Ve vztahu práce a energie chybí činitel 2"
+kind = "missing factor"
+note = "Eliminating t from x(t) and v(t) gives v^2 - v0^2 = 2a(x - x0); the print drops the 2."
+note_cs = "Vyloučením t z x(t) a v(t) vyjde v^2 - v0^2 = 2a(x - x0); v tisku dvojka chybí."
+
 [[erratum]]
 id = "{id}:2"
 kind = "missing factor"
+cause = ["factor-two"]
 corrected = \'\'\'Eq(v**2, v0**2 + 2*a*(x - x0))\'\'\'
 corrected_latex = \'\'\'v^2 = v_0^2 + 2 a (x - x_0)\'\'\'
-note = "Eliminating t from (1) and v = dx/dt gives v^2 - v0^2 = 2a(x - x0): the printed relation lacks the factor 2."
+note = "Eliminating t from (1) and v = dx/dt gives v^2 - v0^2 = 2a(x - x0): the printed relation lacks the factor 2.  Witness: {{witness}}."
 '''
 
 DERIVATION_PY = '''\
