@@ -21,12 +21,13 @@ def test_operators_produce_the_typical_typos():
 
 
 def test_recall_and_false_alarms_on_the_catalog():
-    """At most 3 mutants per verified entry (spread over the operators), for every entry whose
-    printed form has no integral (each mutant of an integral costs seconds of quadrature); every
-    mutant of every entry runs as `quasicentral mutate` and in the slow test below."""
-    ids = [i for i in mutate.verified_entries(texts.shipped()) if not texts.entry(i).printed.has(sp.Integral)]
-    res = mutate.run(per_entry=3, ids=ids)
-    assert res["entries"] > 120 and res["mutants"] > 300
+    """Two mutants (of different operators) of every third verified entry whose printed form has
+    no integral (each mutant of an integral costs seconds of quadrature) — a sample that keeps the
+    default run short; every mutant of every entry runs as `quasicentral mutate` and in the slow
+    test below."""
+    ids = [i for i in mutate.verified_entries(texts.shipped()) if not texts.entry(i).printed.has(sp.Integral)][::3]
+    res = mutate.run(per_entry=2, ids=ids)
+    assert res["entries"] > 40 and res["mutants"] > 70
     assert res["false_alarms"] == 0, res["false_alarm_entries"]
     assert res["recall"] == 1.0, res["undetected"]
 
