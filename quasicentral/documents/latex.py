@@ -435,15 +435,21 @@ def broken_lines(expr, width: int = 70, names: dict[str, str] | None = None,
     """``expr`` in the paper's notation, broken into lines of about ``width`` glyphs; each line
     has its ``\\left``/``\\right`` pairs closed so that it typesets on its own."""
     tex = _BreakingPrinter(width, names, functions).breakable(expr)
+    return [balance(line) for line in fill_lines(tex.split(_BREAK), width)]
+
+
+def fill_lines(pieces, width: int) -> list[str]:
+    """Greedy line filling: the pieces in order, a new line where the next would pass ``width``
+    (the one place it is done, for expressions and for printed rows)."""
     lines, cur = [], ""
-    for seg in tex.split(_BREAK):
-        if cur and visible_width(cur) + visible_width(seg) > width:
+    for piece in pieces:
+        if cur and visible_width(cur) + visible_width(piece) > width:
             lines.append(cur)
-            cur = seg
+            cur = piece
         else:
-            cur += seg
+            cur += piece
     lines.append(cur)
-    return [balance(line) for line in lines]
+    return lines
 
 
 def relation_lines(rel, width: int = 70, names: dict[str, str] | None = None,
@@ -898,14 +904,7 @@ def wrap_row(row: str, width: int = 74) -> str:
         return row
     cuts = [0] + _break_points(row) + [len(row)]
     pieces = [row[a:b] for a, b in zip(cuts, cuts[1:]) if row[a:b].strip()]
-    lines, cur = [], ""
-    for piece in pieces:
-        if cur and visible_width(cur) + visible_width(piece) > width:
-            lines.append(cur)
-            cur = piece
-        else:
-            cur += piece
-    lines.append(cur)
+    lines = fill_lines(pieces, width)
     if len(lines) == 1:
         return row
     lines = [balance(line) for line in lines]
