@@ -442,9 +442,10 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
     until both balls round to ``want`` significant digits at both ends and the ball of the
     difference decides, or :data:`BALL_PREC_LIMIT` is reached; a value is then printed with the
     digits its ball guarantees (correctly rounded).  Where a side has no ball form (an integrand
-    unbounded at an end of the path, a function without a ball evaluation), or without
-    ``opts.certify``, the ladder's two rungs (the second at twice the precision of the first)
-    play that part: only the digits on which they agree are shown (``*_certified`` False).
+    unbounded at an end of the path, a function without a ball evaluation), its value is
+    recomputed at twice the top rung's precision and only the digits on which the two agree are
+    shown (``*_certified`` False).  Without ``opts.certify`` (the fast mutation checker) the two
+    rungs of the ladder play that part.
     """
     balls: list = [None, None]
     certified = False
@@ -483,10 +484,15 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
         if n >= 1:
             out.append((_ball_str(b, n), n, True))
             continue
-        # no ball: the digits on which the ladder's rungs agree (the top rung is a recomputation
-        # at twice the precision of the first: a third one, at twice the top's, costs a
-        # quadrature at 120 to 240 digits and guarantees nothing more of the digits shown)
-        ref, other = top[i], low[i]
+        # no ball: agreement with a recomputation at twice the precision
+        if opts.certify:
+            try:
+                again = bridge.mp_eval((p, d)[i], pt, 2 * dps)
+            except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
+                again = None
+            ref, other = again, top[i]
+        else:
+            ref, other = top[i], low[i]
         s, n = _agreed(ref, other, want) if ref is not None else ("", 0)
         out.append((s, n, False))
     (ps, pn, pc), (cs, cn, cc) = out
