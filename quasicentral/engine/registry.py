@@ -127,6 +127,15 @@ def actually_used(eid: str) -> frozenset[str]:
     return frozenset(_USED.get(eid, ()))
 
 
+def unregister_module(module: str) -> None:
+    """Forget the derivations a module registered (before another file of that name is
+    imported in its place: a copy of a text, or the text's folder read anew)."""
+    for eid in [e for e, d in REGISTRY.items() if d.module == module]:
+        REGISTRY.pop(eid)
+        _MEMO.pop(eid, None)
+        _USED.pop(eid, None)
+
+
 def unregister(prefix: str) -> None:
     """Forget every derivation of the text ``prefix`` (before its modules are imported anew)."""
     for eid in [e for e in REGISTRY if e.split(":", 1)[0] == prefix]:

@@ -33,7 +33,7 @@ from pathlib import Path
 import derivations as _shipped_package
 from quasicentral.engine import errata as errata_mod
 from quasicentral.engine.catalog import CatalogError, Entry, load_file, read_toml, where
-from quasicentral.engine.registry import REGISTRY, unregister
+from quasicentral.engine.registry import REGISTRY, unregister, unregister_module
 from quasicentral.notation.symbols import SymbolError, SymbolTable, table_from_toml
 
 SHIPPED_ROOT = Path(_shipped_package.__file__).parent
@@ -175,6 +175,7 @@ def _import(text: Text, path: Path):
     if name in sys.modules and getattr(sys.modules[name], "__file__", None) == str(path):
         # imported before (e.g. by a test): its derivations registered then
         return sys.modules[name]
+    unregister_module(name)  # another file of this name was imported before: its steps go
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
