@@ -9,6 +9,10 @@ from hypothesis import settings
 from quasicentral.engine import texts
 from quasicentral.engine.checker import Options
 
+# tests/data holds texts (a derivation module registers itself when imported): never collected,
+# not even for doctests
+collect_ignore = ["data"]
+
 # Property tests explore at random on a developer's machine (where they found, e.g., the loss of
 # digits of mpmath's ellipe near m = 1) and replay a fixed sequence in CI, so that a landing never
 # depends on the draw.  Their failures are kept as @example regressions.

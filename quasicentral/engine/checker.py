@@ -421,7 +421,7 @@ def _witness(claim, p, d, pt, row, dps, opts, rel) -> Witness:
 
 WITNESS_DIGITS = 20  # significant digits a witness value shows at most
 BALL_PREC_LIMIT = 4096  # bits: the last precision tried for a witness ball
-WITNESS_BUDGET = 4  # CPU time of a witness's balls, in units of Options.certify_seconds
+WITNESS_BUDGET = 8  # CPU time of a witness's balls, in units of Options.certify_seconds
 
 
 @dataclass(frozen=True)
