@@ -46,7 +46,10 @@ class Options:
     symbolic_seconds: float = 3.0
     symbolic: bool = True
     certify: bool = True
-    certify_seconds: float = 1.0  # ball integrals can be slow: past this the witness stays uncertified
+    # integrand evaluations one witness ball may spend (~30 µs each at 200 bits): past this
+    # its ball integral gives up and the value stays uncertified.  Counted, not timed, so that
+    # a report's certified digits are the same on every machine
+    certify_evaluations: int = 10_000
     agreement_exponent: float = 0.6  # agreement: |p − d| ≤ 10^(−0.6·dps)·scale on each rung
     stable_within: float = 1e-3  # a difference is real when it changes by less than this between rungs
     scale_floor: float = 1e-6  # the scale is at least this fraction of the median magnitude
@@ -420,8 +423,9 @@ def _witness(claim, p, d, pt, row, dps, opts, rel) -> Witness:
 
 
 WITNESS_DIGITS = 20  # significant digits a witness value shows at most
+IMAGINARY_NEGLIGIBLE = 10.0 ** -(WITNESS_DIGITS + 5)  # an imaginary bound this far below the real part
 BALL_PREC_LIMIT = 4096  # bits: the last precision tried for a witness ball
-WITNESS_BUDGET = 8  # CPU time of a witness's balls, in units of Options.certify_seconds
+WITNESS_BUDGET = 4  # integrand evaluations of a witness's balls, in units of Options.certify_evaluations
 
 
 @dataclass(frozen=True)
@@ -450,31 +454,37 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
     balls: list = [None, None]
     certified = False
     if opts.certify:
-        import time
-
         prec = max(64, int(dps * 3.33) + 8)
-        # CPU budget of the whole ladder of balls: a ball integral's cost grows fast with the
-        # precision, and its time-out only turns the integrand into NaN
-        budget = time.process_time() + WITNESS_BUDGET * opts.certify_seconds
+        # the whole ladder of balls shares one budget: a ball integral's cost grows fast with
+        # the precision, and running out only turns its integrand into NaN
+        work = bridge.Work(WITNESS_BUDGET * opts.certify_evaluations)
+        stalled = [False, False]
         while True:
             for i, expr in enumerate((p, d)):
                 if balls[i] is not None and _ball_digits(balls[i], want) >= want:
                     continue
-                left = budget - time.process_time()
-                if balls[i] is False or (left <= 0 and balls[i] is not None):
+                if balls[i] is False or stalled[i] or (work.spent and balls[i] is not None):
                     continue
                 try:
-                    b = bridge.arb_eval(expr, pt, prec=prec, seconds=max(min(opts.certify_seconds, left), 0.05))
+                    b = bridge.arb_eval(expr, pt, prec=prec, work=work.share(opts.certify_evaluations))
                 except (bridge.Unsupported, ValueError, ZeroDivisionError, TypeError, AttributeError):
                     b = None
-                # a ball that is not finite (out of time, or unbounded) will not become finite
-                # at a higher precision: keep the last good one, or give up on balls for this side
-                balls[i] = b if b is not None and b.is_finite() else (balls[i] if balls[i] is not None else False)
+                # a ball that is not finite (out of work, or unbounded) will not become finite
+                # at a higher precision: keep the last good one, or give up on balls for this side.
+                # Nor will one that gained no digit from the doubled precision (its integral is
+                # limited by the evaluations, not the precision): keep it and stop there
+                if b is not None and b.is_finite():
+                    if balls[i] is not None and _ball_digits(b, want) <= _ball_digits(balls[i], want):
+                        stalled[i] = True
+                    balls[i] = b if not stalled[i] or _ball_digits(b, want) >= _ball_digits(balls[i], want) else balls[i]
+                elif balls[i] is None:
+                    balls[i] = False
             if all(b is not None and b is not False for b in balls):  # identity: acb(0) == False
                 certified = not (balls[0] - balls[1]).contains(0)
-            done = all(b is False or (b is not None and _ball_digits(b, want) >= want) for b in balls)
+            done = all(b is False or stalled[i] or (b is not None and _ball_digits(b, want) >= want)
+                       for i, b in enumerate(balls))
             settled = done and (certified or any(b is False for b in balls))
-            if settled or prec >= BALL_PREC_LIMIT or time.process_time() > budget:
+            if settled or prec >= BALL_PREC_LIMIT or work.spent:
                 break
             prec *= 2
     out = []
@@ -500,10 +510,15 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
 
 
 def _real_part(b):
-    """The real ball of an acb whose imaginary part is exactly 0, else None."""
-    im = b.imag
+    """The real ball of an acb whose imaginary part is 0 or negligible, else None.  A ball
+    integral of a real integrand along a real path comes back with an imaginary part of
+    [± tiny] (a bound, not a value): below 10^−(WITNESS_DIGITS + 5) of the real part it
+    cannot move any digit shown."""
+    im, re = b.imag, b.real
     if im.is_exact() and im == 0:
-        return b.real
+        return re
+    if im.contains(0) and not re.contains(0) and im.rad() <= abs(re).lower() * IMAGINARY_NEGLIGIBLE:
+        return re
     return None
 
 

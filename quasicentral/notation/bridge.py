@@ -17,10 +17,10 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
-from quasicentral.notation.timelimit import Deadline
+
+QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
 
 
-#: sympy name -> mpmath function.  One table for the whole project.
 def _quad(f, *intervals):
     """mpmath.quad with guard digits.  An integrand singular at an endpoint (1/√(1 − ζ²))
     loses about half the working digits to cancellation in 1 − ζ next to it, so there the
@@ -35,11 +35,22 @@ def _quad(f, *intervals):
             singular = singular or not mpmath.isfinite(val)
         except (ValueError, ZeroDivisionError, TypeError, OverflowError):
             singular = True
+    # tanh–sinh on one interval misses oscillations over a long path (∫ sin² z … dz over
+    # twenty radians is off in the 10th digit at 30 digits): where its error estimate exceeds
+    # the working precision, the path is cut into more pieces
     with mpmath.workdps(2 * dps if singular else dps + 10):
-        val = mpmath.quad(f, [a, b])
+        tol = mpmath.mpf(10) ** -dps
+        pieces = 1
+        while True:
+            nodes = mpmath.linspace(a, b, pieces + 1) if pieces > 1 else [a, b]
+            val, err = mpmath.quad(f, nodes, error=True)
+            if err <= tol * max(abs(val), tol) or pieces >= QUAD_MAX_PIECES:
+                break
+            pieces *= 4
     return +val
 
 
+#: sympy name -> mpmath function.  One table for the whole project.
 MPMATH_NAMES = {
     "elliptic_k": mpmath.ellipk,
     "elliptic_f": mpmath.ellipf,
@@ -108,8 +119,105 @@ def jet_of(sym: sp.Symbol) -> tuple[sp.Basic, int]:
 
 
 def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
-    """Compile ``expr`` for mpmath (cached by the caller)."""
-    return sp.lambdify(args, expr, modules=[MPMATH_NAMES, "mpmath"])
+    """Compile ``expr`` for mpmath (cached by the caller).  Each definite integral becomes a
+    call of :func:`_quadrature` (flint's Gauss–Legendre where it reaches the working precision,
+    else mpmath's tanh–sinh)."""
+    table = dict(MPMATH_NAMES)
+    placeholders = {}
+    for integral in _outermost_integrals(expr):
+        name = f"quadrature{len(placeholders)}"
+        outer = tuple(sorted(integral.free_symbols, key=str))
+        table[name] = _quadrature(integral, outer)
+        placeholders[integral] = sp.Function(name)(*outer) if outer else sp.Function(name)(sp.Integer(0))
+    return sp.lambdify(args, expr.xreplace(placeholders), modules=[table, "mpmath"])
+
+
+def _outermost_integrals(expr: sp.Basic) -> list[sp.Integral]:
+    if isinstance(expr, sp.Integral):
+        return [expr] if len(expr.limits) == 1 and len(expr.limits[0]) == 3 else []
+    out: list = []
+    for a in expr.args:
+        out += [i for i in _outermost_integrals(a) if i not in out]
+    return out
+
+
+QUADRATURE_EVALUATIONS = 20_000  # integrand evaluations flint may spend before mpmath takes over
+QUADRATURE_GUARD_BITS = 20
+SMOOTH_END_RADIUS = 2.0 ** -30  # the disc around an end of the path that must be free of singularities
+
+
+def _quadrature(integral: sp.Integral, outer: tuple[sp.Symbol, ...]):
+    """An mpmath-callable value of ``integral`` at the values of ``outer`` (its free symbols),
+    at the precision in force.  First python-flint's ball integration at that precision plus
+    guard bits: for an integrand analytic along the path it converges in a few hundred
+    evaluations, and its ball says whether every working bit is right.  Where it does not
+    (no ball form, an endpoint singularity, too much subdivision) mpmath's quadrature
+    (:func:`_quad`) computes the value as before."""
+    try:
+        ball = _ball_function(integral)
+    except Unsupported:
+        ball = None
+    var, lo, hi = integral.limits[0]
+    x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
+    body = sp.lambdify((x,) + outer, integral.function.xreplace({var: x}), modules=[MPMATH_NAMES, "mpmath"])
+    lower = sp.lambdify(outer, lo, modules=[MPMATH_NAMES, "mpmath"])
+    upper = sp.lambdify(outer, hi, modules=[MPMATH_NAMES, "mpmath"])
+
+    def value(*vals):
+        vals = vals[:len(outer)]
+        if ball is not None:
+            got = _ball_quadrature(ball, outer, vals)
+            if got is not None:
+                return got
+        return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)])
+    return value
+
+
+def _ball_quadrature(ball, outer, vals):
+    """flint's value of a compiled integral, or None where it does not hold every bit of the
+    working precision."""
+    import flint
+
+    prec = mpmath.mp.prec
+    old = flint.ctx.prec
+    flint.ctx.prec = prec + QUADRATURE_GUARD_BITS
+    try:
+        env = {}
+        for sym, v in zip(outer, vals):
+            b = _mp_to_acb(v)
+            if b is None:
+                return None
+            env[sym] = b
+        try:
+            r = ball(env, False, Work(QUADRATURE_EVALUATIONS, smooth_ends=True))
+        except (Unsupported, ZeroDivisionError, ValueError):
+            return None
+        if not r.is_finite() or r.rel_accuracy_bits() < prec:
+            return None
+        re, im = _arb_to_mpf(r.real.mid()), _arb_to_mpf(r.imag.mid())
+        return +re if r.imag.contains(0) else +mpmath.mpc(re, im)
+    finally:
+        flint.ctx.prec = old
+
+
+def _mp_to_acb(v):
+    """An mpmath number as an exact acb (None for inf/nan)."""
+    import flint
+
+    v = mpmath.mpmathify(v)
+    parts = (v.real, v.imag) if isinstance(v, mpmath.mpc) else (v,)
+    out = []
+    for x in parts:
+        if not mpmath.isfinite(x):
+            return None
+        sign, man, exp, _ = x._mpf_
+        out.append(flint.arb((-int(man) if sign else int(man), int(exp))))
+    return flint.acb(*out)
+
+
+def _arb_to_mpf(x):
+    man, exp = x.man_exp()
+    return mpmath.mpf((int(man), int(exp)))
 
 
 def mp_value(value: sp.Expr, dps: int):
@@ -135,112 +243,184 @@ class Unsupported(Exception):
     """The expression has a node the ball evaluator does not handle."""
 
 
-def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256, seconds: float | None = None):
+class Work:
+    """A budget of ball-integrand evaluations, shared by every integral of one or more
+    :func:`arb_eval` calls (``None``: unbounded).
+
+    Counted work, not time, so that the same input gives the same balls — and the same
+    certified digits in a report — on every machine (flint's integrator is deterministic).
+    flint's integrator cannot be interrupted by an exception: once the budget is spent, the
+    integrands return NaN balls and the result is simply not finite."""
+
+    def __init__(self, evaluations: int | None = None, parent: "Work | None" = None, smooth_ends: bool = False):
+        self.left = evaluations
+        self.parent = parent
+        # refuse at once an integrand that is not analytic at an end of the path (a branch
+        # point such as √(1 − ζ²) at ζ = 1): flint converges there only after heavy
+        # subdivision, where tanh–sinh quadrature is at its best
+        self.smooth_ends = smooth_ends
+
+    def share(self, evaluations: int) -> "Work":
+        """A budget of at most ``evaluations`` that also spends this one."""
+        return Work(evaluations, self, self.smooth_ends)
+
+    def spend(self) -> bool:
+        """Count one evaluation; False once this budget or its parent's is spent."""
+        if self.spent or (self.parent is not None and not self.parent.spend()):
+            return False
+        if self.left is not None:
+            self.left -= 1
+        return True
+
+    def remaining(self) -> int | None:
+        """Evaluations left here and in every parent (``None``: unbounded)."""
+        own = self.left
+        up = self.parent.remaining() if self.parent is not None else None
+        if own is None or up is None:
+            return own if up is None else up
+        return max(min(own, up), 0)
+
+    @property
+    def spent(self) -> bool:
+        return (self.left is not None and self.left <= 0) or (self.parent is not None and self.parent.spent)
+
+
+def arb_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], prec: int = 256, work: Work | None = None):
     """Evaluate in ``flint.acb`` at ``prec`` bits; returns an acb ball.  Raises
-    :class:`Unsupported` for nodes it cannot bound rigorously.  ``seconds`` bounds the time
-    of CPU time spent in ball integrals: past it their integrands return NaN balls, so the
-    result is simply not finite (flint's integrator cannot be interrupted by an exception).
-    CPU time, not wall time, so that the outcome does not depend on the machine's load."""
+    :class:`Unsupported` for nodes it cannot bound rigorously.  ``work`` bounds the number of
+    integrand evaluations of its ball integrals (see :class:`Work`)."""
     import flint
 
     old = flint.ctx.prec
     flint.ctx.prec = prec
-    deadline = Deadline.after(seconds)
+    work = work if work is not None else Work()
     try:
-        env = {sym: _acb_exact(val, deadline) for sym, val in point.items()}
-        return _arb(expr, env, False, deadline)
+        env = {sym: _acb_exact(val, work) for sym, val in point.items()}
+        return _ball_function(expr)(env, False, work)
     finally:
         flint.ctx.prec = old
 
 
-def _acb_exact(val: sp.Expr, deadline: Deadline):
+def _acb_exact(val: sp.Expr, work: Work):
     import flint
 
     val = sp.nsimplify(val) if not val.is_number else val
     if val.is_Rational:
         return flint.acb(flint.arb(flint.fmpq(int(val.p), int(val.q))))
-    # exact expressions of pi, sqrt, … : evaluate rigorously through the same walker
-    return _arb(val, {}, False, deadline)
+    # exact expressions of pi, sqrt, … : evaluate rigorously through the same compiler
+    return _ball_function(val)({}, False, work)
 
 
-def _arb(e: sp.Basic, env: dict, analytic: bool, deadline: Deadline):  # noqa: C901 - one dispatch table
+# Why a hand-written compiler: lambdify has no python-flint printer, and a ball integrand is
+# called thousands of times, so the expression is turned once into nested closures (no
+# per-call dispatch on node types).  Constants are built at call time: a ball's radius
+# depends on the precision in force then.
+@lru_cache(maxsize=512)
+def _ball_function(e: sp.Basic):
+    """``e`` as a function (env, analytic, work) -> acb; ``env`` maps symbols to balls."""
+    return _compile(e)
+
+
+def _compile(e: sp.Basic):  # noqa: C901 - one dispatch table
     import flint
 
     acb = flint.acb
-    if e in env:
-        return env[e]
+    if isinstance(e, sp.Symbol):
+        return lambda env, an, work: env[e]
     if e.is_Rational:
-        return acb(flint.arb(flint.fmpq(int(e.p), int(e.q))))
+        p, q = int(e.p), int(e.q)
+        return lambda env, an, work: acb(flint.arb(flint.fmpq(p, q)))
     if e is sp.pi:
-        return acb(flint.arb.pi())
+        return lambda env, an, work: acb(flint.arb.pi())
     if e is sp.E:
-        return acb(1).exp()
+        return lambda env, an, work: acb(1).exp()
     if e is sp.I:
-        return acb(0, 1)
-    if isinstance(e, sp.Add):
-        out = acb(0)
-        for a in e.args:
-            out += _arb(a, env, analytic, deadline)
-        return out
-    if isinstance(e, sp.Mul):
-        out = acb(1)
-        for a in e.args:
-            out *= _arb(a, env, analytic, deadline)
-        return out
+        return lambda env, an, work: acb(0, 1)
+    if isinstance(e, (sp.Add, sp.Mul)):
+        parts = [_compile(a) for a in e.args]
+        add = isinstance(e, sp.Add)
+
+        def fold(env, an, work):
+            out = parts[0](env, an, work)
+            for g in parts[1:]:
+                out = out + g(env, an, work) if add else out * g(env, an, work)
+            return out
+        return fold
     if isinstance(e, sp.Pow):
-        base = _arb(e.base, env, analytic, deadline)
-        ex = e.exp
+        base, ex = _compile(e.base), e.exp
         if ex.is_Integer:
-            return base ** int(ex)
+            n = int(ex)
+            return lambda env, an, work: base(env, an, work) ** n
         if ex == sp.Rational(1, 2):
-            return base.sqrt(analytic=analytic)
+            return lambda env, an, work: base(env, an, work).sqrt(analytic=an)
         if ex == -sp.Rational(1, 2):
-            return 1 / base.sqrt(analytic=analytic)
-        if ex.is_Rational:
-            return base.sqrt(analytic=analytic) ** int(2 * ex) if (2 * ex).is_Integer else (
-                (base.log(analytic=analytic) * _arb(ex, env, analytic, deadline)).exp())
-        return (base.log(analytic=analytic) * _arb(ex, env, analytic, deadline)).exp()
+            return lambda env, an, work: 1 / base(env, an, work).sqrt(analytic=an)
+        if ex.is_Rational and (2 * ex).is_Integer:
+            n = int(2 * ex)
+            return lambda env, an, work: base(env, an, work).sqrt(analytic=an) ** n
+        power = _compile(ex)
+        return lambda env, an, work: (base(env, an, work).log(analytic=an) * power(env, an, work)).exp()
     unary = {
-        sp.sin: lambda a: a.sin(), sp.cos: lambda a: a.cos(), sp.tan: lambda a: a.tan(),
-        sp.exp: lambda a: a.exp(), sp.atan: lambda a: a.atan(),
-        sp.log: lambda a: a.log(analytic=analytic), sp.asin: lambda a: a.asin(),
-        sp.acos: lambda a: a.acos(), sp.sinh: lambda a: a.sinh(), sp.cosh: lambda a: a.cosh(),
-        sp.acot: lambda a: (1 / a).atan(),
+        sp.sin: lambda a, an: a.sin(), sp.cos: lambda a, an: a.cos(), sp.tan: lambda a, an: a.tan(),
+        sp.exp: lambda a, an: a.exp(), sp.atan: lambda a, an: a.atan(),
+        sp.log: lambda a, an: a.log(analytic=an), sp.asin: lambda a, an: a.asin(),
+        sp.acos: lambda a, an: a.acos(), sp.sinh: lambda a, an: a.sinh(), sp.cosh: lambda a, an: a.cosh(),
+        sp.acot: lambda a, an: (1 / a).atan(),
+        # |z| is analytic nowhere: an integrand with one gets no ball (mpmath integrates it)
+        sp.Abs: lambda a, an: acb("nan") if an else acb(a.abs()),
+        sp.elliptic_k: lambda a, an: acb.elliptic_k(a),
     }
     if e.func in unary:
-        return unary[e.func](_arb(e.args[0], env, analytic, deadline))
-    if isinstance(e, sp.Abs):
-        a = _arb(e.args[0], env, analytic, deadline)
-        return acb(a.abs())
-    if isinstance(e, sp.elliptic_k):
-        return acb.elliptic_k(_arb(e.args[0], env, analytic, deadline))
-    if isinstance(e, sp.elliptic_f):
-        return acb.elliptic_f(_arb(e.args[0], env, analytic, deadline), _arb(e.args[1], env, analytic, deadline))
+        op, arg = unary[e.func], _compile(e.args[0])
+        return lambda env, an, work: op(arg(env, an, work), an)
+    binary = {sp.elliptic_f: acb.elliptic_f, sp.elliptic_e: acb.elliptic_e_inc}
+    if e.func in binary and len(e.args) == 2:
+        op, (g, h) = binary[e.func], [_compile(a) for a in e.args]
+        return lambda env, an, work: op(g(env, an, work), h(env, an, work))
     if isinstance(e, sp.elliptic_e):
-        if len(e.args) == 1:
-            return acb.elliptic_e(_arb(e.args[0], env, analytic, deadline))
-        return acb.elliptic_e_inc(_arb(e.args[0], env, analytic, deadline), _arb(e.args[1], env, analytic, deadline))
+        arg = _compile(e.args[0])
+        return lambda env, an, work: acb.elliptic_e(arg(env, an, work))
     if isinstance(e, sp.factorial) and e.args[0].is_Integer:
-        return acb(int(sp.factorial(e.args[0])))
+        value = int(sp.factorial(e.args[0]))
+        return lambda env, an, work: acb(value)
     if isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 3:
-        var, lo, hi = e.limits[0]
-        a, b = _arb(lo, env, analytic, deadline), _arb(hi, env, analytic, deadline)
-        body = e.function
+        return _compile_integral(e)
+    raise Unsupported(f"no ball evaluation for {e.func.__name__}")
+
+
+def _compile_integral(e: sp.Integral):
+    import flint
+
+    var, lo, hi = e.limits[0]
+    lower, upper, body = _compile(lo), _compile(hi), _compile(e.function)
+
+    def integral(env, an, work):
+        a, b = lower(env, an, work), upper(env, an, work)
+        inner = dict(env)
         for end in (a, b):
             # flint's integrator needs the integrand analytic on the whole path: at an integrable
             # endpoint singularity (1/√(1 − ζ²) at ζ = 1) it only returns a non-finite ball, after
-            # seconds of subdivision — say so at once instead
+            # much subdivision — say so at once instead
+            inner[var] = end
             try:
-                finite = _arb(body, {**env, var: end}, False, deadline).is_finite()
+                finite = body(inner, False, work).is_finite()
             except ZeroDivisionError:
                 finite = False
             if not finite:
                 raise Unsupported("the integrand is unbounded at an end of the path")
+            if work.smooth_ends:
+                inner[var] = end + flint.acb(flint.arb(0, SMOOTH_END_RADIUS), flint.arb(0, SMOOTH_END_RADIUS))
+                if not body(inner, True, work).is_finite():
+                    raise Unsupported("the integrand is not analytic at an end of the path")
 
-        def f(zz, an):
-            if deadline.expired():
-                return acb("nan")
-            return _arb(body, {**env, var: zz}, an, deadline)
+        def f(z, analytic):
+            if not work.spend():
+                return flint.acb("nan")
+            inner[var] = z
+            return body(inner, analytic, work)
 
-        return acb.integral(f, a, b)
-    raise Unsupported(f"no ball evaluation for {e.func.__name__}")
+        # flint stops by itself at eval_limit: without it, an integrand that has turned NaN
+        # would still be subdivided up to flint's default limit (millions of calls)
+        limit = work.remaining()
+        return flint.acb.integral(f, a, b, eval_limit=limit) if limit is not None else flint.acb.integral(f, a, b)
+    return integral

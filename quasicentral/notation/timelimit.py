@@ -6,17 +6,17 @@ idle one, so verdicts and the reports built from them do not depend on the load.
 * :func:`time_limit` interrupts a block (SIGVTALRM; main thread only, elsewhere unbounded) by
   raising :class:`TimeLimitExceeded`, a ``BaseException`` so that sympy's ``except Exception``
   cannot swallow it;
-* :class:`Deadline` is the cooperative form, for code that cannot be interrupted by a signal
-  (python-flint's integrator calls back into Python: the callback asks ``expired()``).
+
+Where a bound decides what a user keeps (a witness's certified digits in a report), a CPU-time
+bound would make the document depend on the machine: that work is bounded by counting it
+instead (:class:`quasicentral.notation.bridge.Work`).
 """
 
 from __future__ import annotations
 
 import signal
 import threading
-import time
 from contextlib import contextmanager
-from dataclasses import dataclass
 
 
 class TimeLimitExceeded(BaseException):
@@ -40,17 +40,3 @@ def time_limit(seconds: float):
     finally:
         signal.setitimer(signal.ITIMER_VIRTUAL, 0)
         signal.signal(signal.SIGVTALRM, old)
-
-
-@dataclass(frozen=True)
-class Deadline:
-    """A point in CPU time (``None``: never)."""
-
-    at: float | None
-
-    @staticmethod
-    def after(seconds: float | None) -> "Deadline":
-        return Deadline(time.process_time() + seconds if seconds else None)
-
-    def expired(self) -> bool:
-        return self.at is not None and time.process_time() > self.at
