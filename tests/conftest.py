@@ -1,5 +1,6 @@
 """Shared fixtures: one verification run of the whole catalog per test session (cold, in a
-temporary cache, on all cores); the parametrized tests then read their own outcome."""
+temporary cache, on all cores); the parametrized tests then read their own outcome.  Under
+pytest-xdist the first worker computes it and the others read the same verdict cache."""
 
 import os
 
@@ -21,9 +22,16 @@ settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 
 @pytest.fixture(scope="session")
-def outcomes(tmp_path_factory):
+def outcomes(tmp_path_factory, worker_id):
+    from filelock import FileLock
+
     from quasicentral.engine import run as verify
 
-    os.environ["QUASICENTRAL_CACHE"] = str(tmp_path_factory.mktemp("cache"))
+    # one directory for the whole session: the parent of the workers' own temporary folders
+    shared = tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent
+    os.environ["QUASICENTRAL_CACHE"] = str(shared / "verdict-cache")
     entries = texts.entries(texts.shipped())
-    return dict(zip([e.id for e in entries], verify.run(entries, Options(), use_cache=False)))
+    with FileLock(str(shared / "verdict-cache.lock")):
+        # cold for the first worker (the folder is new), read back by the others
+        got = verify.run(entries, Options(), use_cache=True)
+    return dict(zip([e.id for e in entries], got))

@@ -163,10 +163,10 @@ def mask_how(tex: str) -> str:
 
     How a verdict was reached depends on the machine: the checker gives sympy a time bound, so
     a proof that finishes on a quiet machine may time out on a loaded one and the entry is then
-    settled numerically (same verdict, another method, more points); ball integrals have a
-    deadline too, so a witness certified on one machine may be left uncertified on another.
-    Everything else — the verdicts themselves, the printed and derived forms, the witnesses'
-    points and values — is compared exactly.
+    settled numerically (same verdict, another method, more points).  Ball integrals are
+    bounded by counted evaluations, not time, so whether a witness is certified, and its
+    digits, are compared exactly — as is everything else: the verdicts themselves, the
+    printed and derived forms, the witnesses' points and values.
     """
     out, i, key = [], 0, "\\verdicthow{"
     while True:
