@@ -165,3 +165,67 @@ def test_values_beyond_the_double_range_are_compared_exactly():
     dom = Domain.of(ranges={n_: (20, 40)})
     v = numeric(Claim(sp.factorial(sp.floor(n_) ** 2), sp.factorial(sp.floor(n_)), "v"), dom, "big", OPTS, TABLE)
     assert isinstance(v, Refuted)
+
+
+# --- quadrature on the ladder and counted ball work ----------------------------------------------
+def _oscillating(a, b):
+    """∫ sin²(π/2 − t)·√(1 − (1 − b²)cos²(π/2 − t)) dt from π/2 to z: the integral of section 5
+    over twenty radians, where one tanh–sinh pass was off in the 10th digit at 30 digits."""
+    z = sp.Symbol("z", real=True)
+    return z, sp.Integral(sp.sin(sp.pi / 2 - t) ** 2 * sp.sqrt(a ** 2 - (a ** 2 - b ** 2) * sp.cos(sp.pi / 2 - t) ** 2),
+                          (t, sp.pi / 2, z))
+
+
+def _reference(f, a, b, dps):
+    with mpmath.workdps(dps):
+        return mpmath.quad(f, mpmath.linspace(a, b, 129))
+
+
+@pytest.mark.parametrize("with_abs", [False, True], ids=["flint", "mpmath-pieces"])
+def test_a_long_oscillating_path_is_right_to_the_working_precision(with_abs):
+    """With a ball form flint integrates it; with |·| (no ball form) mpmath's quadrature, cut
+    into pieces where its error estimate asks — either way every working digit is right."""
+    a, b = sp.Integer(1), sp.Rational(2513, 10000)
+    z, integral = _oscillating(a, b)
+    if with_abs:
+        integral = integral.replace(lambda e: e.is_Pow and e.exp == sp.Rational(1, 2), lambda e: sp.Abs(e))
+    f = bridge.mp_function(integral, (z,))
+    with mpmath.workdps(70):
+        g = bridge.mp_function(integral.function, (t,))
+    end = mpmath.mpf("-19.484672")  # the same binary number at every precision
+    with mpmath.workdps(70):
+        exact = _reference(g, mpmath.pi / 2, end, 70)
+    for dps in (30, 60):
+        with mpmath.workdps(dps):
+            got = f(end)
+        with mpmath.workdps(70):
+            assert abs(got - exact) <= abs(exact) * mpmath.mpf(10) ** (2 - dps), (dps, got, exact)
+
+
+def test_an_endpoint_singularity_goes_to_tanh_sinh():
+    """1/√(1 − ζ²) is unbounded at ζ = 1: no ball integral, mpmath's value: arcsin."""
+    zeta = sp.Symbol("zeta", real=True)
+    f = bridge.mp_function(sp.Integral(1 / sp.sqrt(1 - zeta ** 2), (zeta, sp.Rational(1, 3), 1)), ())
+    with mpmath.workdps(30):
+        assert abs(f() - (mpmath.pi / 2 - mpmath.asin(mpmath.mpf(1) / 3))) < mpmath.mpf(10) ** -28
+
+
+def test_ball_work_is_counted_not_timed():
+    """The same budget gives the same ball every time; a spent budget gives a non-finite
+    ball at once (flint would read an evaluation limit of 0 as its default)."""
+    zeta = sp.Symbol("zeta", real=True)
+    k = sp.Rational(1, 2)
+    expr = sp.Integral(sp.sqrt((1 - zeta ** 2) * (1 - k ** 2 * zeta ** 2)), (zeta, 1, sp.Rational(1, 5)))
+    first = bridge.arb_eval(expr, {}, prec=200, work=bridge.Work(20_000))
+    again = bridge.arb_eval(expr, {}, prec=200, work=bridge.Work(20_000))
+    assert first.is_finite() and first.mid() == again.mid() and first.rad() == again.rad()
+    assert not bridge.arb_eval(expr, {}, prec=200, work=bridge.Work(50)).is_finite()
+    spent = bridge.Work(10)
+    while spent.spend():
+        pass
+    assert not bridge.arb_eval(expr, {}, prec=200, work=spent).is_finite()
+    shared = bridge.Work(100)
+    child = shared.share(1_000)
+    for _ in range(100):
+        assert child.spend()
+    assert not child.spend() and shared.spent and child.remaining() == 0

@@ -367,7 +367,7 @@ def _compile(e: sp.Basic):  # noqa: C901 - one dispatch table
         sp.acos: lambda a, an: a.acos(), sp.sinh: lambda a, an: a.sinh(), sp.cosh: lambda a, an: a.cosh(),
         sp.acot: lambda a, an: (1 / a).atan(),
         # |z| is analytic nowhere: an integrand with one gets no ball (mpmath integrates it)
-        sp.Abs: lambda a, an: acb("nan") if an else acb(a.abs()),
+        sp.Abs: lambda a, an: acb("nan") if an else acb(abs(a)),
         sp.elliptic_k: lambda a, an: acb.elliptic_k(a),
     }
     if e.func in unary:
@@ -422,5 +422,9 @@ def _compile_integral(e: sp.Integral):
         # flint stops by itself at eval_limit: without it, an integrand that has turned NaN
         # would still be subdivided up to flint's default limit (millions of calls)
         limit = work.remaining()
-        return flint.acb.integral(f, a, b, eval_limit=limit) if limit is not None else flint.acb.integral(f, a, b)
+        if limit is None:
+            return flint.acb.integral(f, a, b)
+        if limit <= 0:  # spent (and flint would read an eval_limit of 0 as its default)
+            return flint.acb("nan")
+        return flint.acb.integral(f, a, b, eval_limit=limit)
     return integral
