@@ -233,7 +233,7 @@ class _QuietPipe:
 
 
 def _add_period(sub) -> None:
-    from quasicentral.models.period import METHODS as PERIOD_METHODS, SERIES_MAX_TERMS
+    from quasicentral.models.registry import PERIOD_METHODS, SERIES_MAX_TERMS
 
     pe = sub.add_parser("period", help="the exact period of the simple pendulum, T and T/T0")
     amp = pe.add_mutually_exclusive_group()
@@ -448,34 +448,74 @@ def _selected(args):
     return entries
 
 
+def _replay_key(args) -> str | None:
+    """The key of a whole cached ``verify`` run with these options (None: none can apply)."""
+    from quasicentral.engine import fingerprint, replay
+
+    folders = fingerprint.text_folders(args.texts)
+    if folders is None:
+        return None  # the full reader says what is wrong with the names
+    options = {"source": args.source, "ids": args.ids, "dps": args.dps, "json": args.json,
+               "junit": args.junit is not None}
+    return replay.key("verify", options, folders)
+
+
 def _verify(args) -> int:
-    from quasicentral.engine import formats as output
-    from quasicentral.engine import run as verify
-    from quasicentral.engine.checker import Options
+    from quasicentral.engine import replay
 
     if args.junit is not None and not args.junit.strip():
         raise UsageError("--junit needs a file name")
+    t0 = time.perf_counter()
+    key = None if args.no_cache else _replay_key(args)
+    if key is not None:
+        try:
+            rec = replay.load(key)
+        except replay.ReplayError as exc:
+            _warn(f"cache: {exc}; discarded, recomputed")
+            rec = None
+        if rec is not None:  # nothing the run depends on has changed since
+            if args.junit:
+                _write_atomic(Path(args.junit), rec.junit or "", "--junit")
+            sys.stdout.write(rec.stdout)
+            _timing(args, f"verify: {_entries(rec.entries)} read back in {time.perf_counter() - t0:.1f} s "
+                          "(a cached run: nothing it depends on has changed)")
+            return rec.exit
+    return _verify_run(args, key, t0)
+
+
+def _verify_run(args, key: str | None, t0: float) -> int:
+    from quasicentral.engine import formats as output
+    from quasicentral.engine import replay
+    from quasicentral.engine import run as verify
+    from quasicentral.engine.checker import Options
+
     try:
         opts = Options(dps=args.dps)  # the ladder's floor is the checker's (Options.MIN_DPS)
     except ValueError as exc:
         raise UsageError(f"--dps: {exc}") from None
     entries = _selected(args)
-    t0 = time.perf_counter()
     with ProgressBar(args, "verify") as bar:
         outcomes = verify.run(entries, opts, use_cache=not args.no_cache, jobs=args.jobs, progress=bar,
                               on_warning=_warn)
     seconds = time.perf_counter() - t0
     doc = output.verify_document(entries, outcomes)
+    junit = output.junit_xml(entries, outcomes) if args.junit else None
     if args.junit:
-        _write_atomic(Path(args.junit), output.junit_xml(entries, outcomes), "--junit")
-    if args.json:
-        print(json.dumps(doc, indent=2, sort_keys=False, ensure_ascii=False))
-    else:
-        print(output.verify_table(doc))
+        _write_atomic(Path(args.junit), junit, "--junit")
+    shown = (json.dumps(doc, indent=2, sort_keys=False, ensure_ascii=False) if args.json
+             else output.verify_table(doc)) + "\n"
+    sys.stdout.write(shown)
     cached = bar.last.cached if bar.last else 0
     _timing(args, f"verify: checked {_entries(len(entries))} in {seconds:.1f} s "
                   f"(computed: {len(entries) - cached}, read from the cache: {cached})")
-    return EXIT_OK if doc["summary"]["ok"] else EXIT_UNEXPECTED
+    code = EXIT_OK if doc["summary"]["ok"] else EXIT_UNEXPECTED
+    if key is not None:
+        keys = verify.cache_keys(entries, opts)
+        digests = {verify.cache_file(keys[e.id]).name: replay.digest(verify.cache_file(keys[e.id])) for e in entries}
+        if all(digests.values()):  # every verdict is in the cache: the run can be read back
+            replay.store(key, replay.Record(stdout=shown, exit=code, entries=len(entries), junit=junit,
+                                            verdicts=digests))
+    return code
 
 
 def _errata(args) -> int:

@@ -95,9 +95,46 @@ def test_timing_line_says_what_it_times(tmp_path, monkeypatch, capsys):
     assert "verify: checked 1 entry in" in capsys.readouterr().err
     assert main(["verify", "--id", "brepta1953:1"]) == 0
     err = capsys.readouterr().err
-    assert err.startswith("verify: checked 1 entry in") and "(computed: 0, read from the cache: 1)" in err, err
+    assert err.startswith("verify: 1 entry read back in") and "a cached run" in err, err
     assert main(["verify", "--id", "brepta1953:1", "--json"]) == 0
     assert capsys.readouterr().err == ""  # --json: quiet
+    for f in tmp_path.glob("runs/*.json"):  # the whole run forgotten: each verdict read from the cache
+        f.unlink()
+    assert main(["verify", "--id", "brepta1953:1"]) == 0
+    err = capsys.readouterr().err
+    assert err.startswith("verify: checked 1 entry in") and "(computed: 0, read from the cache: 1)" in err, err
+
+
+def test_a_warm_run_is_read_back_whole_and_checked(tmp_path, monkeypatch, capsys):
+    """A run whose code, texts and options are unchanged is read back without sympy: the same
+    output, exit code and JUnit report.  A per-entry verdict edited since, or a record of the
+    wrong shape, sends the run through the checked cache again."""
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
+    args = ["verify", "--id", "pendulum:equation-of-motion", "--jobs", "1", "--json"]
+    assert main(args + ["--junit", str(tmp_path / "a.xml")]) == 0
+    first = capsys.readouterr().out
+    assert main(args + ["--junit", str(tmp_path / "b.xml")]) == 0
+    assert capsys.readouterr().out == first
+    assert (tmp_path / "b.xml").read_bytes() == (tmp_path / "a.xml").read_bytes()
+    assert len(list(tmp_path.glob("runs/*.json"))) == 1
+    # a per-entry verdict edited to say "verified": not read back, the checked cache recomputes it
+    (verdict,) = tmp_path.glob("*.json")
+    d = json.loads(verdict.read_text())
+    d["status"] = "verified"
+    verdict.write_text(json.dumps(d))
+    assert main(args) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["equations"][0]["status"] == "erratum"
+    assert "contradicts the errata registry" in err
+    # a record of the wrong shape: one line, and the run recomputed
+    (record,) = [r for r in tmp_path.glob("runs/*.json") if '"junit": null' in r.read_text()]
+    record.write_text('{"stdout": 3}')
+    assert main(args) == 0
+    out, err = capsys.readouterr()
+    assert out == first and len(err.strip().splitlines()) == 1 and "wrong shape" in err and str(record) in err
+    # the options are part of the key: the table is not the JSON
+    assert main(args[:-1]) == 0
+    assert not capsys.readouterr().out.startswith("{")
 
 
 def test_version_flag(capsys):

@@ -21,44 +21,12 @@ from multiprocessing import get_context
 from pathlib import Path
 
 from quasicentral.engine import catalog, texts
+from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
 from quasicentral.engine.checker import Options, check
 from quasicentral.engine.registry import REGISTRY
 from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Status, Verdict, Verified
 from quasicentral.files import write_text
 from quasicentral.progress import OptionalCallback, notify
-
-CACHE_VERSION = "2"  # 2: texts as folders, keys per text
-
-
-def cache_dir() -> Path:
-    base = os.environ.get("QUASICENTRAL_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "quasicentral")
-    return Path(base)
-
-
-VERDICT_LAYERS = ("notation", "engine")
-
-
-def code_fingerprint() -> str:
-    """Hash of the source files verdicts are computed by (:data:`VERDICT_LAYERS`) and of the
-    versions of the libraries that compute them (each text's own files are hashed by
-    :meth:`texts.Text.fingerprint`)."""
-    from importlib import metadata
-
-    h = hashlib.sha256(CACHE_VERSION.encode())
-    for dist in ("sympy", "mpmath", "python-flint", "numpy", "scipy"):  # their answers are the verdicts'
-        try:
-            h.update(f"{dist}={metadata.version(dist)}".encode())
-        except metadata.PackageNotFoundError:
-            h.update(dist.encode())
-    pkg = Path(__file__).parent.parent
-    for layer in VERDICT_LAYERS:  # the code a verdict depends on (not the documents, models, CLI)
-        for path in sorted((pkg / layer).rglob("*.py")):
-            if "__pycache__" not in path.parts:
-                h.update(path.relative_to(pkg).as_posix().encode())
-                h.update(path.read_bytes())
-    return h.hexdigest()
-
 
 def verify_entry(entry: catalog.Entry, opts: Options) -> Outcome:
     text = texts.text_of(entry.id)
@@ -168,6 +136,18 @@ def cached_problem(eid: str, d: object) -> str | None:
     return None
 
 
+def cache_keys(entries: list[catalog.Entry], opts: Options) -> dict[str, str]:
+    """Each entry's key in the verdict cache: the code, its text's files, its id, the options."""
+    fp = code_fingerprint()
+    text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
+    return {e.id: hashlib.sha256(json.dumps([fp, text_fp[e.text], e.id, asdict(opts)], sort_keys=True).encode()
+                                 ).hexdigest() for e in entries}
+
+
+def cache_file(key: str) -> Path:
+    return cache_dir() / f"{key}.json"
+
+
 def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None,
         progress: OptionalCallback = None, on_warning=None) -> list[Outcome]:
     """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed).
@@ -186,15 +166,12 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
         else:
             warnings.warn(text, CacheWarning, stacklevel=3)
 
-    fp = code_fingerprint()
-    text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
-    key_of = {e.id: hashlib.sha256(json.dumps([fp, text_fp[e.text], e.id, asdict(opts)], sort_keys=True).encode()
-                                   ).hexdigest() for e in entries}
+    key_of = cache_keys(entries, opts)
     results: dict[str, dict] = {}
     cdir = cache_dir()
     if use_cache:
         for e in entries:
-            f = cdir / f"{key_of[e.id]}.json"
+            f = cache_file(key_of[e.id])
             if f.is_file():
                 try:
                     d = json.loads(f.read_text())
@@ -229,7 +206,7 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
         try:
             cdir.mkdir(parents=True, exist_ok=True)
             for eid in todo:
-                write_text(cdir / f"{key_of[eid]}.json", json.dumps(results[eid], sort_keys=True))
+                write_text(cache_file(key_of[eid]), json.dumps(results[eid], sort_keys=True))
         except OSError:
             pass  # a read-only cache is not an error
     return [_outcome_from_json(results[e.id]) for e in entries]

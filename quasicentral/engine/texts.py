@@ -21,7 +21,6 @@ A derivation module finds its text's symbols with :func:`symbols_of`::
 
 from __future__ import annotations
 
-import hashlib
 import importlib.util
 import re
 import sys
@@ -30,19 +29,16 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 
-import derivations as _shipped_package
 from quasicentral.engine import errata as errata_mod
+from quasicentral.engine.fingerprint import SHIPPED_ROOT, TEXT_FILE, folder_fingerprint
 from quasicentral.engine.catalog import CatalogError, Entry, load_file, read_toml, where
 from quasicentral.engine.registry import REGISTRY, unregister, unregister_module
 from quasicentral.notation.symbols import SymbolError, SymbolTable, table_from_toml
 
-SHIPPED_ROOT = Path(_shipped_package.__file__).parent
-TEXT_FILE = "text.toml"
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*\Z")
 _META_KEYS = {"id", "title", "title_en", "authors", "year", "language", "citation", "derivations",
               "symbols", "functions"}
 LANGUAGES = ("cs", "en", "de", "fr", "sk", "pl", "it", "es", "ru")
-DOCUMENT_FILES = ("report.toml", "figures.py")  # read by the documents only, never by the checker
 MAX_FILE_BYTES = 4 * 2**20  # a text's TOML file is typed by hand: more is not a text
 
 
@@ -86,17 +82,9 @@ class Text:
         return self.root.parent == SHIPPED_ROOT
 
     def fingerprint(self) -> str:
-        """Hash of every file of the folder a verdict can depend on (all but the report's prose
-        and the figures, :data:`DOCUMENT_FILES`): a change there invalidates its verdicts."""
-        h = hashlib.sha256(self.id.encode())
-        for path in sorted(self.root.rglob("*")):
-            rel = path.relative_to(self.root)
-            if rel.as_posix() in DOCUMENT_FILES:
-                continue
-            if path.is_file() and "__pycache__" not in rel.parts and not any(p.startswith(".") for p in rel.parts):
-                h.update(rel.as_posix().encode())
-                h.update(path.read_bytes())
-        return h.hexdigest()
+        """Hash of every file of the folder a verdict can depend on (see
+        :func:`quasicentral.engine.fingerprint.folder_fingerprint`)."""
+        return folder_fingerprint(self.id, self.root)
 
     # --- contents --------------------------------------------------------------------------
     @cached_property

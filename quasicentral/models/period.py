@@ -37,28 +37,16 @@ from __future__ import annotations
 
 import math
 from decimal import ROUND_HALF_EVEN, Decimal, localcontext
-from enum import Enum
 from functools import cached_property
 
 import mpmath
 import numpy as np
 
 from quasicentral.models.arithmetic import BALL, DOUBLE, LN4, MP, DomainError  # noqa: F401 - LN4 re-exported
+# the routes' names live with the models' (a light module the command line reads for its choices)
+from quasicentral.models.registry import PERIOD_METHODS as METHODS, SERIES_MAX_TERMS, PeriodMethod as Method  # noqa: F401
 from quasicentral.notation import numbers
 
-
-class Method(str, Enum):
-    """A route to T/T0 (the value is its name on the command line)."""
-
-    AGM = "agm"
-    SERIES = "series"
-    ELLIPK = "ellipk"
-    QUAD = "quad"
-    ODE = "ode"
-
-
-METHODS = tuple(m.value for m in Method)
-SERIES_MAX_TERMS = 10**6  # the one limit of the series (66), in every context and on the command line
 TWO_OVER_PI = 2 / math.pi
 
 

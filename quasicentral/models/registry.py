@@ -58,6 +58,21 @@ REFERENCE = (Model.LINEAR, Model.QUADRATIC, Model.SPHERICAL)
 APPROXIMATIONS = (Model.ELLIPSE, Model.LINEAR, Model.QUADRATIC, Model.QUADRATIC_FIRST_ORDER)
 
 
+class PeriodMethod(str, Enum):
+    """A route to the period's T/T0 (:mod:`quasicentral.models.period`; the value is its name
+    on the command line)."""
+
+    AGM = "agm"
+    SERIES = "series"
+    ELLIPK = "ellipk"
+    QUAD = "quad"
+    ODE = "ode"
+
+
+PERIOD_METHODS = tuple(m.value for m in PeriodMethod)
+SERIES_MAX_TERMS = 10**6  # the one limit of the series (66), in every context and on the command line
+
+
 def names(models) -> str:
     """'a, b, c' for an error message."""
     return ", ".join(m.value for m in models)
