@@ -102,7 +102,8 @@ def build_parser() -> argparse.ArgumentParser:
                  "Checks each equation as printed against its re-derivation: symbolically, then numerically on a\n"
                  "precision ladder (dps, 2·dps), certified by ball arithmetic where it can.  Verdicts are cached\n"
                  "under a hash of the code, the catalog, the errata and the options ($QUASICENTRAL_CACHE, else\n"
-                 "~/.cache/quasicentral).  Exit 0 when every entry is verified, a registered erratum or a cleared\n"
+                 "~/.cache/quasicentral); a run whose code, texts and options are unchanged is read back whole.\n"
+                 "Exit 0 when every entry is verified, a registered erratum or a cleared\n"
                  "suspect; 1 when anything is unexpected; 2 on bad usage (e.g. a selection that selects nothing).",
                  "quasicentral verify\n"
                  "quasicentral verify --text mynotes --json\n"

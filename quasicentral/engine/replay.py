@@ -38,7 +38,9 @@ class Record:
 def key(command: str, options: dict, folders: list[tuple[str, Path]]) -> str:
     """The record's key: the code, each text's files, the command and its options."""
     texts_fp = [[tid, str(root), folder_fingerprint(tid, root)] for tid, root in folders]
-    blob = json.dumps([REPLAY_VERSION, code_fingerprint(), command, options, texts_fp], sort_keys=True)
+    # the command line prints what the engine formats: its own code is part of the key too
+    cli = digest(Path(__file__).resolve().parent.parent / "cli.py")
+    blob = json.dumps([REPLAY_VERSION, code_fingerprint(), cli, command, options, texts_fp], sort_keys=True)
     return hashlib.sha256(blob.encode()).hexdigest()
 
 
