@@ -190,8 +190,8 @@ def _ball_quadrature(ball, outer, vals):
             env[sym] = b
         try:
             r = ball(env, False, Work(QUADRATURE_EVALUATIONS, smooth_ends=True))
-        except (Unsupported, ZeroDivisionError, ValueError):
-            return None
+        except (Unsupported, ArithmeticError, ValueError, TypeError, AttributeError):
+            return None  # the fast path failed: mpmath's quadrature decides
         if not r.is_finite() or r.rel_accuracy_bits() < prec:
             return None
         re, im = _arb_to_mpf(r.real.mid()), _arb_to_mpf(r.imag.mid())
