@@ -128,10 +128,11 @@ def test_a_warm_run_is_read_back_whole_and_checked(tmp_path, monkeypatch, capsys
     assert "contradicts the errata registry" in err
     # a record of the wrong shape: one line, and the run recomputed
     (record,) = [r for r in tmp_path.glob("runs/*.json") if '"junit": null' in r.read_text()]
-    record.write_text('{"stdout": 3}')
-    assert main(args) == 0
-    out, err = capsys.readouterr()
-    assert out == first and len(err.strip().splitlines()) == 1 and "wrong shape" in err and str(record) in err
+    for junk in (b'{"stdout": 3}', b"\x9f\x00 not text", b"[1, 2]"):
+        record.write_bytes(junk)
+        assert main(args) == 0
+        out, err = capsys.readouterr()
+        assert out == first and len(err.strip().splitlines()) == 1 and "wrong shape" in err and str(record) in err
     # the options are part of the key: the table is not the JSON
     assert main(args[:-1]) == 0
     assert not capsys.readouterr().out.startswith("{")

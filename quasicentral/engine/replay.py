@@ -60,11 +60,11 @@ def load(k: str) -> Record | None:
     raises :class:`ReplayError` for a record of the wrong shape."""
     path = _path(k)
     try:
-        raw = path.read_text(encoding="utf-8")
+        raw = path.read_bytes()
     except OSError:
         return None
     try:
-        d = json.loads(raw)
+        d = json.loads(raw.decode("utf-8"))
         rec = Record(stdout=d["stdout"], exit=d["exit"], entries=d["entries"], junit=d["junit"],
                      verdicts=dict(d["verdicts"]))
         ok = (isinstance(rec.stdout, str) and rec.exit in (0, 1) and isinstance(rec.entries, int)
