@@ -474,9 +474,11 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
                 # Nor will one that gained no digit from the doubled precision (its integral is
                 # limited by the evaluations, not the precision): keep it and stop there
                 if b is not None and b.is_finite():
-                    if balls[i] is not None and _ball_digits(b, want) <= _ball_digits(balls[i], want):
+                    old = balls[i]
+                    if old is not None and _ball_digits(b, want) <= _ball_digits(old, want):
                         stalled[i] = True
-                    balls[i] = b if not stalled[i] or _ball_digits(b, want) >= _ball_digits(balls[i], want) else balls[i]
+                        b = b if _ball_digits(b, want) == _ball_digits(old, want) else old
+                    balls[i] = b
                 elif balls[i] is None:
                     balls[i] = False
             if all(b is not None and b is not False for b in balls):  # identity: acb(0) == False
