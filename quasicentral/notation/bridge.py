@@ -12,6 +12,7 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import lru_cache
 
 import mpmath
@@ -21,13 +22,13 @@ import sympy as sp
 QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
 
 
-def _quad(f, *intervals):
+def _quad(f, interval, singular: bool = False):
     """mpmath.quad with guard digits.  An integrand singular at an endpoint (1/√(1 − ζ²))
-    loses about half the working digits to cancellation in 1 − ζ next to it, so there the
-    precision is doubled; elsewhere ten guard digits suffice."""
+    loses about half the working digits to cancellation in 1 − ζ next to it, so there
+    (``singular``, or a non-finite value at an end) the precision is doubled; elsewhere ten
+    guard digits suffice."""
     dps = mpmath.mp.dps
-    (a, b), = intervals
-    singular = False
+    a, b = interval
     for end in (a, b):
         try:
             with mpmath.workdps(15):
@@ -141,35 +142,133 @@ def _outermost_integrals(expr: sp.Basic) -> list[sp.Integral]:
     return out
 
 
-QUADRATURE_EVALUATIONS = 20_000  # integrand evaluations flint may spend before mpmath takes over
+QUADRATURE_EVALUATIONS = 20_000
 QUADRATURE_GUARD_BITS = 20
 SMOOTH_END_RADIUS = 2.0 ** -30  # the disc around an end of the path that must be free of singularities
 
 
+def _singular(value: sp.Basic) -> bool:
+    return value.has(sp.zoo, sp.oo, -sp.oo, sp.nan)
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """A definite integral made ready for quadrature (:func:`prepare`): ``pieces`` are
+    integrals in the ``params`` only, each parameter standing for an expression in the outer
+    symbols, computed once per value instead of at every node; ``singular`` says which pieces
+    keep a singular end (mpmath integrates those at doubled precision)."""
+
+    params: tuple[tuple[sp.Dummy, sp.Expr], ...]
+    pieces: tuple[sp.Integral, ...]
+    singular: tuple[bool, ...]
+
+
+@lru_cache(maxsize=512)
+def prepare(integral: sp.Integral) -> Prepared:
+    """``integral`` with its ends smoothed, then its parameters lifted out (:func:`_lift`).
+
+    At an end e where the integrand is unbounded like |x − e|^(−1/2) (1/√(1 − ζ²) at ζ = 1),
+    x = e ± (b − a)·u² (u from 0 to 1) makes it analytic: every radicand is factored, its
+    factor u² leaves the root as u (u > 0, so √(u²·W) = u·√W on the principal branch: the
+    value is unchanged) and cancels the Jacobian's u.  The distance to the end is then u²,
+    computed without cancellation, so both flint's Gauss–Legendre and tanh–sinh keep every
+    working digit there.  A path singular at both ends is cut at its midpoint.  Where the
+    substitution does not leave an integrand sympy sees bounded (a log, a higher order, a
+    trigonometric radicand) the path stays as it is, marked singular."""
+    x, a, b = integral.limits[0]
+    f = integral.function
+    ends = [_singular(f.xreplace({x: e})) for e in (a, b)]
+    pieces = [(integral, any(ends))]
+    if any(ends):
+        u = sp.Dummy("u", positive=True)
+        spans = [(a, (a + b) / 2, True), ((a + b) / 2, b, False)] if all(ends) else [(a, b, ends[0])]
+        smoothed = []
+        for lo, hi, at_lower in spans:
+            # ∫_lo^hi f dx = ∫_0^1 f(x(u))·2(hi − lo)·u du, x = lo + (hi − lo)u² or hi − (hi − lo)u²
+            xs = lo + (hi - lo) * u**2 if at_lower else hi - (hi - lo) * u**2
+            g = f.xreplace({x: xs}) * 2 * (hi - lo) * u
+            g = g.replace(lambda e: isinstance(e, sp.Pow) and not e.exp.is_Integer and e.base.has(u),
+                          lambda e: sp.factor(e.base) ** e.exp)
+            smoothed.append((sp.Integral(g, (u, 0, 1)), False))
+            if _singular(g.xreplace({u: 0})):
+                break
+        else:
+            pieces = smoothed
+    table: dict[sp.Expr, sp.Dummy] = {}
+    lifted = []
+    for piece, _ in pieces:
+        var, lo, hi = piece.limits[0]
+        if piece.function.has(sp.Integral, sp.Sum, sp.Derivative, sp.Piecewise):
+            lifted.append(piece)  # bound variables inside: nothing is lifted
+        else:
+            lo, hi = (end if end.is_number else _param(end, table) for end in (lo, hi))
+            lifted.append(sp.Integral(_lift(piece.function, var, table), (var, lo, hi)))
+    return Prepared(tuple((d, e) for e, d in table.items()), tuple(lifted), tuple(s for _, s in pieces))
+
+
+def _param(e: sp.Expr, table: dict) -> sp.Dummy:
+    if e not in table:
+        table[e] = sp.Dummy(f"p{len(table)}")
+    return table[e]
+
+
+def _lift(e: sp.Expr, x: sp.Symbol, table: dict) -> sp.Expr:
+    """``e`` with each largest sub-expression free of ``x`` (other than a number) replaced by a
+    parameter: cos(√(g/l)·t)·(1 − k²x²) → p0·(1 − p1·x²).  The tree is only rebuilt, so its
+    value is unchanged; an integrand is then a small expression in x and the parameters."""
+    if not e.has(x):
+        return e if e.is_number else _param(e, table)
+    if e.is_Atom:
+        return e
+    if isinstance(e, sp.Add):
+        e = sp.collect(e, x)  # a polynomial in x keeps one coefficient per power
+    if isinstance(e, (sp.Add, sp.Mul)):
+        free, bound = e.as_independent(x, as_Add=isinstance(e, sp.Add))
+        rest = bound.args if bound.func is e.func else (bound,)
+        return e.func(_lift(free, x, table), *[_lift(r, x, table) for r in rest])
+    return e.func(*[_lift(arg, x, table) for arg in e.args])
+
+
 def _quadrature(integral: sp.Integral, outer: tuple[sp.Symbol, ...]):
     """An mpmath-callable value of ``integral`` at the values of ``outer`` (its free symbols),
-    at the precision in force.  First python-flint's ball integration at that precision plus
-    guard bits: for an integrand analytic along the path it converges in a few hundred
-    evaluations, and its ball says whether every working bit is right.  Where it does not
-    (no ball form, an endpoint singularity, too much subdivision) mpmath's quadrature
-    (:func:`_quad`) computes the value as before."""
+    at the precision in force: its parameters computed once, then the sum over its pieces
+    (:func:`prepare`)."""
+    prep = prepare(integral)
+    names = tuple(d for d, _ in prep.params)
+    param_values = sp.lambdify(outer, [e for _, e in prep.params], modules=[MPMATH_NAMES, "mpmath"])
+    pieces = [_piece_quadrature(piece, names, singular) for piece, singular in zip(prep.pieces, prep.singular)]
+
+    def value(*vals):
+        # at the precision of a singular path's quadrature: its integrand may cancel a parameter
+        # (cos φ − cos φ₀ next to φ₀)
+        with mpmath.workdps(2 * mpmath.mp.dps + 10):
+            pv = param_values(*vals[:len(outer)])
+        return mpmath.fsum(piece(*pv) for piece in pieces) if len(pieces) > 1 else pieces[0](*pv)
+    return value
+
+
+def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singular: bool):
+    """One piece's value at the values of its parameters.  First python-flint's ball
+    integration at the working precision plus guard bits: for an integrand analytic along the
+    path it converges in a few hundred evaluations, and its ball says whether every working bit
+    is right.  Where it does not (no ball form, an endpoint singularity, too much subdivision)
+    mpmath's quadrature (:func:`_quad`) computes the value."""
     try:
-        ball = _ball_function(integral)
+        ball = _compile_path(integral)
     except Unsupported:
         ball = None
     var, lo, hi = integral.limits[0]
     x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
-    body = sp.lambdify((x,) + outer, integral.function.xreplace({var: x}), modules=[MPMATH_NAMES, "mpmath"])
-    lower = sp.lambdify(outer, lo, modules=[MPMATH_NAMES, "mpmath"])
-    upper = sp.lambdify(outer, hi, modules=[MPMATH_NAMES, "mpmath"])
+    body = sp.lambdify((x,) + params, integral.function.xreplace({var: x}), modules=[MPMATH_NAMES, "mpmath"])
+    lower = sp.lambdify(params, lo, modules=[MPMATH_NAMES, "mpmath"])
+    upper = sp.lambdify(params, hi, modules=[MPMATH_NAMES, "mpmath"])
 
     def value(*vals):
-        vals = vals[:len(outer)]
         if ball is not None:
-            got = _ball_quadrature(ball, outer, vals)
+            got = _ball_quadrature(ball, params, vals)
             if got is not None:
                 return got
-        return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)])
+        return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)], singular=singular)
     return value
 
 
@@ -389,6 +488,20 @@ def _compile(e: sp.Basic):  # noqa: C901 - one dispatch table
 
 
 def _compile_integral(e: sp.Integral):
+    prep = prepare(e)
+    params = [(d, _compile(expr)) for d, expr in prep.params]
+    parts = [_compile_path(piece) for piece in prep.pieces]
+
+    def total(env, an, work):
+        inner = {**env, **{d: g(env, an, work) for d, g in params}}
+        out = parts[0](inner, an, work)
+        for part in parts[1:]:
+            out = out + part(inner, an, work)
+        return out
+    return total
+
+
+def _compile_path(e: sp.Integral):
     import flint
 
     var, lo, hi = e.limits[0]
