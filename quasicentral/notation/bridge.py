@@ -65,15 +65,18 @@ def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
     """Replace each infinite ``Sum`` by the closed form sympy finds for it (lambdify cannot
     evaluate an infinite sum, and ``mpmath.nsum`` loses accuracy near the radius of
     convergence); a sum sympy cannot close stays, and its evaluation then fails honestly."""
-    def close(sm):
-        if any(lim[2] in (sp.oo, -sp.oo) or lim[1] in (sp.oo, -sp.oo) for lim in sm.limits):
-            done = sm.doit()
-            # a Piecewise closed form whose "otherwise" branch keeps the Sum is fine: the
-            # branch is evaluated only outside the region of convergence
-            return sm if isinstance(done, sp.Sum) else done
-        return sm
+    return expr.replace(lambda e: isinstance(e, sp.Sum), _closed_sum)
 
-    return expr.replace(lambda e: isinstance(e, sp.Sum), close)
+
+@lru_cache(maxsize=1024)
+def _closed_sum(sm: sp.Sum) -> sp.Basic:
+    """One infinite sum's closed form (sympy's summation takes ~0.5 s: each is done once)."""
+    if any(lim[2] in (sp.oo, -sp.oo) or lim[1] in (sp.oo, -sp.oo) for lim in sm.limits):
+        done = sm.doit()
+        # a Piecewise closed form whose "otherwise" branch keeps the Sum is fine: the
+        # branch is evaluated only outside the region of convergence
+        return sm if isinstance(done, sp.Sum) else done
+    return sm
 
 
 def _one_variable(f: sp.Basic) -> sp.Symbol | None:

@@ -15,6 +15,7 @@ import hashlib
 import random
 from dataclasses import dataclass, field
 
+import mpmath
 import sympy as sp
 
 from quasicentral.notation.symbols import SymbolTable
@@ -86,6 +87,17 @@ class Sampler:
     extra_ranges: dict = field(default_factory=dict)
 
     def draw(self, count: int, max_tries: int = 200) -> list[dict[sp.Symbol, sp.Expr]]:
+        """``count`` points (fewer if the constraints reject too many tries); the same arguments
+        give the same points, which are remembered (a mutation run draws them for every mutant)."""
+        key = (self.domain, id(self.table), tuple(self.symbols), self.seed,
+               tuple(sorted(self.extra_ranges.items(), key=lambda kv: str(kv[0]))), count, max_tries)
+        if key not in _DRAWN:
+            if len(_DRAWN) > DRAWS_REMEMBERED:
+                _DRAWN.clear()
+            _DRAWN[key] = (self.table, self._draw(count, max_tries))  # the table kept alive: its id stays its own
+        return [dict(pt) for pt in _DRAWN[key][1]]
+
+    def _draw(self, count: int, max_tries: int) -> list[dict[sp.Symbol, sp.Expr]]:
         rng = random.Random(self.seed)
         ranges = self.domain.range_map(self.table)
         ranges.update(self.extra_ranges)
@@ -99,18 +111,55 @@ class Sampler:
             raise KeyError(f"no range declared for symbol {missing[0]}")
         # endpoints and constraints with the definitions applied, once
         ends = {sym: tuple(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym]) for sym in order}
-        constraints = [substitute_definitions(c, defs) for c in self.domain.constraints]
+        constraints = [_Constraint(substitute_definitions(c, defs)) for c in self.domain.constraints]
         points = []
         tries = 0
         while len(points) < count and tries < count * max_tries:
             tries += 1
             pt: dict[sp.Symbol, sp.Expr] = {}
             for sym in order:
-                lo, hi = (e.xreplace(pt) for e in ends[sym])
+                lo, hi = (e.xreplace(pt) if e.free_symbols else e for e in ends[sym])
                 pt[sym] = lo + (hi - lo) * sp.Rational(rng.randrange(1, 2**20), 2**20)
-            if all(_holds(c, pt) for c in constraints):
+            if all(c.holds(pt) for c in constraints):
                 points.append(pt)
         return points
+
+
+_DRAWN: dict = {}
+DRAWS_REMEMBERED = 2_000
+#: a constraint whose two sides differ by less than this (relative, at 30 digits) is decided exactly
+CONSTRAINT_MARGIN = 1e-20
+
+
+class _Constraint:
+    """A constraint (definitions applied) decided at a point: lhs − rhs at 30 digits in mpmath
+    (compiled once), exactly by sympy only where the two sides are too close to tell."""
+
+    def __init__(self, constraint: sp.Basic):
+        self.constraint = constraint
+        self.compiled = None
+        if isinstance(constraint, sp.core.relational.Relational):
+            self.args = tuple(sorted(constraint.free_symbols, key=str))
+            diff = constraint.lhs - constraint.rhs
+            self.compiled = sp.lambdify(self.args, [diff, abs(constraint.lhs) + abs(constraint.rhs)], "mpmath")
+
+    def holds(self, pt: dict) -> bool:
+        if self.compiled is not None and all(a in pt for a in self.args):
+            try:
+                with mpmath.workdps(30):
+                    diff, size = self.compiled(*[_mp(pt[a]) for a in self.args])
+                    if isinstance(diff, mpmath.mpf) and abs(diff) > CONSTRAINT_MARGIN * size:
+                        return bool(type(self.constraint)(sp.Float(diff._mpf_, 30), 0))
+            except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+                pass
+        return _holds(self.constraint, pt)
+
+
+def _mp(value: sp.Expr):
+    """An exact sympy number as mpmath (at the precision in force)."""
+    if value.is_Rational:
+        return mpmath.mpf(int(value.p)) / int(value.q)
+    return mpmath.mpmathify(sp.N(value, mpmath.mp.dps + 10))
 
 
 def _holds(constraint: sp.Basic, pt: dict) -> bool:
