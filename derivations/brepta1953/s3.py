@@ -14,7 +14,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.calculus.euler import euler_equations
 
-from quasicentral.engine.registry import derived, derives
+from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
@@ -31,12 +31,14 @@ def bob_position() -> sp.Matrix:
     return l * sp.Matrix([sp.sin(phi) * sp.cos(psi), sp.sin(phi) * sp.sin(psi), -sp.cos(phi)])
 
 
+@shared
 def lagrangian() -> sp.Expr:
     """L = ½m|ṙ|² − m g z = ½ m l²(φ̇² + sin²φ ψ̇²) + m g l cos φ."""
     vel = bob_position().diff(t)
     return sp.simplify(m * vel.dot(vel) / 2) - m * g * bob_position()[2]
 
 
+@shared
 def euler_lagrange() -> tuple[sp.Expr, sp.Expr]:
     """The two Euler–Lagrange residuals (in φ and in ψ), each divided by m l²."""
     eq_phi, eq_psi = euler_equations(lagrangian(), [phi, psi], t)
@@ -48,6 +50,7 @@ def small(expr: sp.Expr) -> sp.Expr:
     return expr.xreplace({D(phi, 2): EPS * D(phi, 2), D(phi): EPS * D(phi), phi: EPS * phi})
 
 
+@shared
 def leading_order(expr: sp.Expr, max_order: int = 4) -> sp.Expr:
     """The lowest non-vanishing Taylor coefficient of expr(ε) at ε = 0 (ε set to 1)."""
     for order in range(max_order + 1):
@@ -176,6 +179,7 @@ def central_force():
     return sp.Eq(S, derived("brepta1953:11").rhs.subs(phi, phi_of_rho))
 
 
+@shared
 def oscillator_frequency() -> sp.Expr:
     """The angular frequency of ẍ = −(S/(mρ)) x from (12), read off dsolve's solution."""
     Xf = sp.Function("X")
@@ -185,6 +189,7 @@ def oscillator_frequency() -> sp.Expr:
     return freq
 
 
+@shared
 def oscillator_period() -> sp.Expr:
     """The period 2π/freq; asserted: the general solution repeats after it."""
     freq = oscillator_frequency()

@@ -15,7 +15,7 @@ from __future__ import annotations
 import sympy as sp
 
 from quasicentral.notation.domain import Domain
-from quasicentral.engine.registry import derived, derives
+from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D, arccotg
 from quasicentral.engine.texts import symbols_of
 
@@ -163,6 +163,7 @@ def damped_y():
     return damped_equation(y, "brepta1953:rewritten-y")
 
 
+@shared
 def characteristic_polynomial() -> sp.Expr:
     """e^{−λt}·(residual of (16) on x = e^{λt}); asserted the same for (17)."""
     polys = []
@@ -211,6 +212,7 @@ def damped_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Exp
     return sp.expand(sol)
 
 
+@shared
 def relabel(sol: sp.Expr, basis: tuple, names: tuple) -> sp.Expr:
     """Name the free constants of a general solution after the basis functions they multiply."""
     consts = sorted(sol.free_symbols - {t, kappa, omega}, key=str)
@@ -358,6 +360,7 @@ def undamped_ellipse():
     return sp.Eq(y**2, sp.solve(squared, Y2)[0])
 
 
+@shared
 def discriminant() -> sp.Expr:
     """The discriminant of the characteristic polynomial in λ: 4κ² − 4Ω²."""
     return sp.discriminant(characteristic_polynomial(), lam)
@@ -369,6 +372,7 @@ def critical_condition():
     return discriminant()
 
 
+@shared
 def critical_kappa() -> sp.Expr:
     """The non-negative κ at which the discriminant vanishes."""
     (kc,) = [r for r in sp.solve(discriminant(), kappa) if r.is_nonnegative is not False]

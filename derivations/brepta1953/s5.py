@@ -34,7 +34,7 @@ from __future__ import annotations
 import sympy as sp
 
 from quasicentral.notation.domain import Domain
-from quasicentral.engine.registry import derived, derives
+from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
@@ -129,6 +129,7 @@ def moment_law_quadratic():
 
 
 # --- the undamped motion ------------------------------------------------------------------------
+@shared
 def undamped(c_sin, c_cos) -> sp.Expr:
     """dsolve f'' = −(g/l) f with f(0) = c_cos, f'(0) = Ω c_sin (Ω := √(g/l), Omega-definition)."""
     ff = sp.Function("f")
@@ -317,6 +318,7 @@ def cd_variation():
     return lagrange(Cf, Df, 1)
 
 
+@shared
 def varied_rates(i: int) -> tuple[sp.Expr, sp.Expr]:
     """(P', Q') from the 2×2 system of the variation of constants (sympy solve; the ideal speed
     V = √V² is held as one symbol while solving)."""
@@ -331,12 +333,14 @@ def varied_rates(i: int) -> tuple[sp.Expr, sp.Expr]:
     return sp.trigsimp(sp.factor(sol[p])).subs(back), sp.trigsimp(sp.factor(sol[q])).subs(back)
 
 
+@shared
 def speed_squared() -> sp.Expr:
     """V² = ẋ² + ẏ² on the ellipse = R₀²Ω² sin² Ωt + v₀² cos² Ωt."""
     vel = ideal_velocity_map()
     return sp.expand(vel[D(x)] ** 2 + vel[D(y)] ** 2)
 
 
+@shared
 def integrate_by_speed(rate: sp.Expr) -> sp.Expr:
     """∫ rate dt for rate = h(V²)·d(V²)/dt (the substitution W = V²); returns the antiderivative
     H(V²) with no constant, verified by differentiation."""
@@ -501,6 +505,7 @@ def delta(var=z) -> sp.Expr:
     return sp.sqrt(1 - k**2 * sp.sin(var) ** 2)
 
 
+@shared
 def legendre_antiderivative(integrand: sp.Expr, var=z) -> sp.Expr:
     """G with dG/dz = integrand for integrand = P(sin² z)/Δ, P a polynomial of degree ≤ 2:
     G = a F(z | k²) + b E(z | k²) + c sin z cos z Δ, the coefficients matched in dG/dz.
@@ -536,11 +541,13 @@ def along_motion(expr: sp.Expr) -> sp.Expr:
                                                            e.limits[0][2].subs(z, Z_OF_T))))
 
 
+@shared
 def amplitude_b() -> sp.Expr:
     """B(t) = (βR₀u/Ω) ∫_{π/2}^{π/2−Ωt} cos² z Δ dz + C₂ (B-integral-k along the motion)."""
     return along_motion(derived("brepta1953:B-integral-k").rhs)
 
 
+@shared
 def amplitude_c() -> sp.Expr:
     """C(t) = (βv₀u/Ω²) ∫_{π/2}^{π/2−Ωt} sin² z Δ dz + C₃ (C-integral-z along the motion)."""
     return along_motion(derived("brepta1953:C-integral-z").rhs)
@@ -577,6 +584,7 @@ def split_limits(expr: sp.Expr) -> sp.Expr:
     return expr.replace(lambda e: isinstance(e, sp.Integral) and e.limits[0][1] == sp.pi / 2, split)
 
 
+@shared
 def closed(expr: sp.Expr) -> sp.Expr:
     """The amplitude integrals of ``expr`` in Legendre form (evaluate_amplitude_integrals), u = R₀Ω."""
     return evaluate_amplitude_integrals(expr).subs(u, R0 * Omega)
@@ -585,6 +593,7 @@ def closed(expr: sp.Expr) -> sp.Expr:
 # The printed steps in ζ, derived along the whole motion: each is the same step taken in the
 # amplitude z (where ζ = sin z, √(1 − ζ²) = cos z), its integrals given in closed Legendre form so
 # that they are exact and cheap at every t.  The print's ζ-integrals agree for 0 ≤ Ωt ≤ π only.
+@shared
 def b_steps() -> dict[str, sp.Expr]:
     """B along the motion after each printed step (amplitude integrals, not yet evaluated)."""
     whole = amplitude_b()
@@ -592,6 +601,7 @@ def b_steps() -> dict[str, sp.Expr]:
     return {"zeta": whole, "split": split, "split-limits": split_limits(split)}
 
 
+@shared
 def c_steps() -> dict[str, sp.Expr]:
     """C along the motion after each printed step."""
     whole = amplitude_c()
@@ -748,6 +758,7 @@ def eq30():
     return sp.Eq(y, general_y())
 
 
+@shared
 def conditions_at_start(xg: sp.Expr, yg: sp.Expr) -> dict:
     """The four constants from x(0) = R₀, y(0) = 0, ẋ(0) = 0, ẏ(0) = v₀ (initial-conditions)."""
     x0, y0, xd0, yd0 = initial_values()
@@ -759,6 +770,7 @@ def conditions_at_start(xg: sp.Expr, yg: sp.Expr) -> dict:
     return {c: sp.factor(v) for c, v in sol[0].items()}
 
 
+@shared
 def general_constants() -> dict:
     return conditions_at_start(general_x(), general_y())
 
@@ -820,6 +832,7 @@ def conical_condition():
     return sp.expand(speed_squared() - v0**2)
 
 
+@shared
 def conical(expr: sp.Expr) -> sp.Expr:
     """expr at v₀ = R₀Ω (the radicand V² becomes R₀²Ω²)."""
     return sp.simplify(expr.subs(v0, R0 * Omega))
@@ -841,6 +854,7 @@ def conical_y():
     return sp.Eq(eq.lhs, conical(eq.rhs))
 
 
+@shared
 def conical_general(i: int) -> sp.Expr:
     """Variation of constants for the conical forcing: P = C + ∫₀ᵗ P' dt, Q = C' + ∫₀ᵗ Q' dt
     (elementary: sympy integrate)."""
@@ -866,6 +880,7 @@ def eq32():
     return sp.Eq(y, conical_general(1))
 
 
+@shared
 def conical_constants() -> dict:
     return conditions_at_start(conical_general(0), conical_general(1))
 
@@ -889,6 +904,7 @@ def conical_c1_c3():
     return [sp.Eq(C1, c1_), sp.Eq(C1, consts[C1]), sp.Eq(C3, c3_), sp.Eq(C3, consts[C3])]
 
 
+@shared
 def conical_particular() -> tuple[sp.Expr, sp.Expr]:
     consts = conical_constants()
     return conical_general(0).subs(consts), conical_general(1).subs(consts)

@@ -27,13 +27,12 @@ k of the text's K(k).  The series (62)–(66) use the general term of the formal
 
 from __future__ import annotations
 
-from functools import lru_cache
 
 import mpmath
 import sympy as sp
 
 from quasicentral.notation.domain import Domain
-from quasicentral.engine.registry import derived, derives
+from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
@@ -75,6 +74,7 @@ def velocity() -> sp.Matrix:
     return position().diff(t)
 
 
+@shared
 def kinetic() -> sp.Expr:
     """T = ½ m ṙ·ṙ."""
     return sp.simplify(m * velocity().dot(velocity()) / 2)
@@ -99,12 +99,13 @@ def potential() -> sp.Expr:
     return potential_of_y().subs(Y, position()[1])
 
 
+@shared
 def lagrangian() -> sp.Expr:
     """L = T − V."""
     return kinetic() - potential()
 
 
-@lru_cache(maxsize=None)
+@shared
 def acceleration() -> sp.Expr:
     """φ̈ from the Euler–Lagrange equation d/dt ∂L/∂φ̇ − ∂L/∂φ = 0."""
     (el,) = sp.calculus.euler.euler_equations(lagrangian(), phi, t)
@@ -128,6 +129,7 @@ def first_integral() -> sp.Expr:
     return sp.expand(2 * energy_function() / (m * l**2))
 
 
+@shared
 def angular_speed(angle: sp.Expr) -> sp.Expr:
     """φ̇ as a function of the angle on the rising quarter (0 → φ0, φ̇ ≥ 0): the root of
     h(φ, φ̇) = h(φ0, 0) that is positive inside the swing."""
@@ -202,7 +204,7 @@ def check_closed_form(amplitudes=("0.3", "2", "3.1"), taus=("0.7", "2.9", "11.3"
     return float(worst)
 
 
-@lru_cache(maxsize=None)
+@shared
 def exact_motion() -> sp.Expr:
     """φ(t) = Φ(Ωt, φ0), after checking the closed form against the derived equation."""
     residual = check_closed_form()
@@ -310,7 +312,7 @@ def root_of_integrand():
     return sp.sqrt(sp.expand(sp.simplify(l / (2 * g) * angular_speed(vphi) ** 2)))
 
 
-@lru_cache(maxsize=None)
+@shared
 def double_angle() -> sp.Eq:
     """cos φ = cos(2·φ/2) = 2cos²(φ/2) − 1 = 1 − 2 sin²(φ/2) (expand_trig, then sin² + cos² = 1)."""
     a = sp.Symbol("a", real=True)
@@ -361,7 +363,7 @@ def substitution():
     return radicand_target()
 
 
-@lru_cache(maxsize=None)
+@shared
 def angle_of_w() -> sp.Expr:
     """φ(ψ) solved from (57) on the branch with φ(0) = 0: 2 asin(sin(φ0/2) sin ψ); it maps
     ψ ∈ [0, π/2] increasingly onto [0, φ0]."""
@@ -421,7 +423,7 @@ def sqrt_abs_cos():
 
 
 # --- the period as an elliptic integral (60)–(61) --------------------------------------------
-@lru_cache(maxsize=None)
+@shared
 def period_integrand() -> sp.Expr:
     """dT/dψ: 4·(dt/dφ)(dφ/dψ) with dt/dφ = 1/φ̇(φ) (53) and φ = φ(ψ) (57), simplified with
     the radicand √(cos φ − cos φ0) = √2 sin(φ0/2) cos ψ (cos ψ ≥ 0 on [0, π/2])."""
@@ -439,13 +441,14 @@ def period_integrand() -> sp.Expr:
     return sp.simplify(expr.subs(c, sp.sqrt(1 - sp.sin(w) ** 2)).subs(kp, KMOD))
 
 
+@shared
 def period_integral() -> sp.Expr:
     """T = ∫₀^{π/2} dT/dψ dψ, the constant factor taken out of the integral."""
     const, integrand = period_integrand().as_independent(w, as_Add=False)
     return const * sp.Integral(integrand, (w, 0, sp.pi / 2))
 
 
-@lru_cache(maxsize=None)
+@shared
 def period() -> sp.Expr:
     """T = ∫₀^{π/2} dT/dψ dψ integrated by sympy: 4√(l/g) K(m = sin²(φ0/2)) (sympy's
     elliptic_k takes the parameter m = k²).  The tests compare it with a direct integration of
@@ -462,13 +465,13 @@ def quarter_period_substituted():
     return {Tper: period_integral(), vphi: angle_of_w()}
 
 
-@derives("pendulum:quarter-period-cos", mode="substitute")
+@derives("pendulum:quarter-period-cos", mode="substitute", uses=("pendulum:cos-half-angle",))
 def quarter_period_cos():
     """T/4 = √(l/g)∫ dψ / cos(φ/2) = √(l/g)∫ dψ/√(1 − sin²(φ/2)), φ = φ(ψ) of (57)."""
     return {Tper: period_integral(), vphi: angle_of_w()}
 
 
-@derives("pendulum:60")
+@derives("pendulum:60", uses=("pendulum:cos-half-angle",))
 def period_elliptic():
     """T = 4√(l/g) ∫₀^{π/2} dψ/√(1 − sin²(φ0/2) sin²ψ): the integral of the substituted
     integrand (53) → (57)–(59), computed by the chain rule."""
@@ -483,7 +486,7 @@ def elliptic_k_definition():
 
 
 # --- the series (62)–(66) --------------------------------------------------------------------
-@lru_cache(maxsize=None)
+@shared
 def binomial_series():
     """The formal power series of (1 − X)^(−1/2) (sympy fps) and its general term a(n)."""
     X = sp.Symbol("X")
@@ -519,7 +522,7 @@ def integrand_series_terms():
     return sp.Eq(INTEGRAND, truncated_integrand())
 
 
-@lru_cache(maxsize=None)
+@shared
 def wallis() -> sp.Expr:
     """I(n) = ∫₀^{π/2} sin^{2n}ψ dψ by the reduction formula: d/dψ(sin^{2n−1}ψ cos ψ) =
     (2n−1) sin^{2n−2}ψ − 2n sin^{2n}ψ integrates to 0 = (2n−1)I(n−1) − 2n I(n); rsolve with
@@ -560,7 +563,7 @@ def truncated_period() -> sp.Expr:
     return prefactor * total
 
 
-@derives("pendulum:period-series-integral", unknowns=(Tper,))
+@derives("pendulum:period-series-integral", unknowns=(Tper,), uses=("pendulum:cos-half-angle",))
 def period_series_integral():
     """T ≈ 4√(l/g) ∫₀^{π/2} Σ_{n<4} a(n) (sin(φ0/2) sin ψ)^{2n} dψ: the period integral with
     the integrand replaced by its truncated binomial series."""
@@ -570,13 +573,13 @@ def period_series_integral():
     return sp.Eq(Tper, const * sp.Integral(truncated_integrand(), (w, 0, sp.pi / 2)))
 
 
-@derives("pendulum:65", unknowns=(Tper,))
+@derives("pendulum:65", unknowns=(Tper,), uses=("pendulum:cos-half-angle",))
 def period_series():
     """T ≈ 4√(l/g) Σ_{n<4} a(n) I(n) sin^{2n}(φ0/2)."""
     return sp.Eq(Tper, truncated_period())
 
 
-@derives("pendulum:66", unknowns=(Tper,))
+@derives("pendulum:66", unknowns=(Tper,), uses=("pendulum:cos-half-angle",))
 def period_series_factored():
     """T ≈ 2π√(l/g) Σ_{n<4} a(n) (2I(n)/π) sin^{2n}(φ0/2): (65) with π/2 taken out."""
     return sp.Eq(Tper, truncated_period())

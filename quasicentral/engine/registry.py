@@ -21,6 +21,8 @@ may call :func:`derived` on another id, and each such call is recorded
 
 from __future__ import annotations
 
+import copy
+import functools
 import inspect
 from dataclasses import dataclass
 from enum import Enum
@@ -70,7 +72,8 @@ class Derivation:
 REGISTRY: dict[str, Derivation] = {}
 _MEMO: dict[str, object] = {}
 _USED: dict[str, set[str]] = {}
-_STACK: list[str] = []
+_STACK: list = []  # the derivations (and shared helpers) being computed, innermost last
+_GENERATION = [0]  # counts changes of the registry: a shared helper's results are kept per generation
 
 
 class RegistryError(ValueError):
@@ -95,6 +98,7 @@ def derives(eid: str, *more: str, mode: Mode | str = Mode.SOLVE, domain: Domain 
                 raise RegistryError(f"duplicate derivation for {one!r} ({func.__module__}.{func.__name__})")
             REGISTRY[one] = Derivation(one, func, mode, domain or Domain(), tuple(uses), unknowns,
                                        inspect.cleandoc(func.__doc__), func.__module__)
+        _GENERATION[0] += 1
         return func
 
     return deco
@@ -121,6 +125,34 @@ def derived(eid: str):
     return _MEMO[eid]
 
 
+def shared(func):
+    """A helper that several derivations call (a general solution, a table of constants):
+    computed once per arguments, while each derivation that calls it is still recorded as
+    using what the helper asked :func:`derived` for — as if it had computed it itself.  The
+    helper must be a function of its (hashable) arguments and of derived results only; a
+    returned dict or list is copied for each caller."""
+    results: dict[tuple, tuple[object, frozenset]] = {}
+
+    @functools.wraps(func)
+    def helper(*args):
+        key = (_GENERATION[0], args)
+        if results and next(iter(results))[0] != key[0]:
+            results.clear()  # the registry changed since: every result is computed anew
+        if key not in results:
+            frame = ("shared", func, args)
+            _STACK.append(frame)
+            try:
+                value = func(*args)
+            finally:
+                _STACK.pop()
+            results[key] = (value, frozenset(_USED.pop(frame, ())))
+        value, used = results[key]
+        if _STACK and used:
+            _USED.setdefault(_STACK[-1], set()).update(used)
+        return copy.copy(value) if isinstance(value, (dict, list)) else value
+    return helper
+
+
 def actually_used(eid: str) -> frozenset[str]:
     """The ids whose results the derivation of ``eid`` asked for (after it has run)."""
     derived(eid)
@@ -134,6 +166,7 @@ def unregister_module(module: str) -> None:
         REGISTRY.pop(eid)
         _MEMO.pop(eid, None)
         _USED.pop(eid, None)
+    _GENERATION[0] += 1
 
 
 def unregister(prefix: str) -> None:
@@ -142,6 +175,7 @@ def unregister(prefix: str) -> None:
         REGISTRY.pop(eid)
         _MEMO.pop(eid, None)
         _USED.pop(eid, None)
+    _GENERATION[0] += 1
 
 
 def as_list(obj) -> list:
