@@ -27,11 +27,23 @@ def outcomes(tmp_path_factory, worker_id):
 
     from quasicentral.engine import run as verify
 
-    # one directory for the whole session: the parent of the workers' own temporary folders
-    shared = tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent
+    shared = _session_dir(tmp_path_factory, worker_id)
     os.environ["QUASICENTRAL_CACHE"] = str(shared / "verdict-cache")
     entries = texts.entries(texts.shipped())
     with FileLock(str(shared / "verdict-cache.lock")):
         # cold for the first worker (the folder is new), read back by the others
         got = verify.run(entries, Options(), use_cache=True)
     return dict(zip([e.id for e in entries], got))
+
+
+@pytest.fixture(scope="session")
+def verdict_cache(outcomes, tmp_path_factory, worker_id):
+    """The session's verdict cache, holding every shipped entry's verdict (see ``outcomes``):
+    a test that needs the shipped texts' verdicts but does not test their computation reads
+    them back from here."""
+    return _session_dir(tmp_path_factory, worker_id) / "verdict-cache"
+
+
+def _session_dir(tmp_path_factory, worker_id):
+    """One directory for the whole session: the parent of the xdist workers' own folders."""
+    return tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent

@@ -80,7 +80,8 @@ def test_a_refuted_function_of_theta_is_certified(kepler, capsys):
     assert code == 1 and row["verdict"] == "refuted" and row["witness"]["certified"]
 
 
-def test_shipped_and_user_texts_together(kepler, capsys):
+def test_shipped_and_user_texts_together(kepler, capsys, monkeypatch, verdict_cache):
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(verdict_cache))  # the shipped verdicts: read back
     code, out, err = _run(["catalog", "--text", str(kepler), "--text", "pendulum", "--json"], capsys)
     assert code == 0, err
     assert {r["text"] for r in json.loads(out)["equations"]} == {"kepler", "pendulum"}
@@ -134,16 +135,20 @@ def test_a_derivation_that_raises_while_checked_is_inconclusive(kepler, capsys):
     assert "derivation failed: NameError" in row["detail"]
 
 
-def test_the_cache_follows_the_texts_files(kepler, capsys):
-    """Editing a user's derivation invalidates its verdicts, and only those."""
-    assert _run(["verify", "--text", str(kepler), "--text", "pendulum"], capsys)[0] == 0
+def test_the_cache_follows_the_texts_files(kepler, tmp_path, capsys):
+    """Editing a user's derivation invalidates its verdicts, and only those: the other text's
+    (a new text's skeleton) are read back."""
+    other = tmp_path / "other"
+    assert _run(["new-text", str(other)], capsys)[0] == 0
+    assert _run(["verify", "--text", str(kepler), "--text", str(other)], capsys)[0] == 0
     _edit(kepler / "orbit.py", "return sp.Eq(T**2, sp.simplify(period**2))",
           "return sp.Eq(T**2, sp.simplify(2 * period**2))")
     texts.reset()
     seen = []
-    selected = texts.activate(texts.resolve([str(kepler), "pendulum"]))
+    selected = texts.activate(texts.resolve([str(kepler), str(other)]))
     outcomes = run.run(texts.entries(selected), Options(), progress=seen.append)
-    assert seen[0].cached == len(texts.get("pendulum").entries)  # the other text's verdicts stand
+    assert seen[0].cached == len(texts.get("other").entries) == 2  # the other text's verdicts stand
+    assert seen[0].total == len(outcomes) > 2
     by_id = {o.id: o for o in outcomes}
     assert not by_id["kepler:3"].ok  # the edited derivation no longer supports the correction
 
