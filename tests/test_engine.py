@@ -268,6 +268,21 @@ def test_an_end_the_substitution_cannot_smooth_goes_to_tanh_sinh(case):
         assert abs(got - truth) <= abs(truth) * mpmath.mpf(10) ** (2 - dps), (dps, got, truth)
 
 
+def test_cutting_the_path_stops_where_it_does_not_help(monkeypatch):
+    """√(1 − 2ζ²) has a branch point inside [0, 1] (a mutant's integrand): four pieces do not
+    improve tanh–sinh's error estimate, so the path is not cut into 16 and 64 (seconds each)."""
+    calls = []
+    real = mpmath.quad
+
+    def counted(*args, **kwargs):
+        calls.append(len(args[1]) - 1)
+        return real(*args, **kwargs)
+    monkeypatch.setattr(mpmath, "quad", counted)
+    with mpmath.workdps(30):
+        bridge._quad(lambda z: mpmath.sqrt(1 - 2 * z ** 2), [mpmath.mpf(0), mpmath.mpf(1)])
+    assert calls == [1, 4]
+
+
 def test_ball_work_is_counted_not_timed():
     """The same budget gives the same ball every time; a spent budget gives a non-finite
     ball at once (flint would read an evaluation limit of 0 as its default)."""

@@ -20,6 +20,7 @@ import sympy as sp
 
 
 QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
+QUAD_PIECES_GAIN = 100  # ... and the least gain in its error estimate for which it cuts further
 
 
 def _quad(f, interval, singular: bool = False):
@@ -38,16 +39,22 @@ def _quad(f, interval, singular: bool = False):
             singular = True
     # tanh–sinh on one interval misses oscillations over a long path (∫ sin² z … dz over
     # twenty radians is off in the 10th digit at 30 digits): where its error estimate exceeds
-    # the working precision, the path is cut into more pieces
+    # the working precision, the path is cut into more pieces — while cutting helps.  Where
+    # four times the pieces do not gain QUAD_PIECES_GAIN in the estimate, the trouble is not
+    # the path's length but a singularity inside it (a branch point of a root that turns
+    # negative): more pieces would only cost time, and the value stands as it is, for the
+    # precision ladder to judge
     with mpmath.workdps(2 * dps if singular else dps + 10):
         tol = mpmath.mpf(10) ** -dps
-        pieces = 1
+        pieces, before = 1, None
         while True:
             nodes = mpmath.linspace(a, b, pieces + 1) if pieces > 1 else [a, b]
             val, err = mpmath.quad(f, nodes, error=True)
             if err <= tol * max(abs(val), tol) or pieces >= QUAD_MAX_PIECES:
                 break
-            pieces *= 4
+            if before is not None and not err * QUAD_PIECES_GAIN <= before:
+                break
+            pieces, before = pieces * 4, err
     return +val
 
 
