@@ -147,15 +147,24 @@ def test_text_examples():
 
 # --- golden files -----------------------------------------------------------------------------
 @pytest.fixture(scope="module")
-def generated(outcomes, tmp_path_factory):
-    """Every golden document generated in-process, written with its figures to a tmp dir."""
+def generated(outcomes, verdict_cache, tmp_path_factory):
+    """Every golden document generated in-process, written with its figures to a tmp dir —
+    while a second generation runs in a fresh process (see test_generation_is_byte_identical),
+    started first so that it overlaps with this one and with the compilation."""
+    second = tmp_path_factory.mktemp("second")
+    env = {**os.environ, "PYTHONHASHSEED": "12345", "QUASICENTRAL_CACHE": str(verdict_cache)}
+    proc = subprocess.Popen([sys.executable, "-m", "quasicentral.cli", "report", "--all", "--out", str(second)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=second)
     texts.activate(texts.shipped(), exclusive=True)  # the golden documents are the shipped texts'
     docs: dict[str, str] = {}
     for kinds, langs in report.GOLDEN:
         docs.update(report.generate(kinds, langs, outcomes))
     out = tmp_path_factory.mktemp("reports")
     report.write(out, docs)
-    return out, docs
+    yield out, docs, (proc, second)
+    if proc.poll() is None:
+        proc.kill()
+    proc.communicate()
 
 
 def mask_how(tex: str) -> str:
@@ -193,7 +202,7 @@ def test_golden_reports(generated):
     """The committed reports/ are what the code generates now (versions.tex aside: it states
     the machine's software; \verdicthow{...} aside: see mask_how).  On failure: review the
     diff, then regenerate."""
-    _, docs = generated
+    _, docs, _ = generated
     names = sorted(n for n in docs if n != report.VERSIONS_FILE)
     committed = sorted(p.name for p in GOLDEN.glob("*.tex") if p.name != report.VERSIONS_FILE) if GOLDEN.is_dir() else []
     problems, diffs = [], []
@@ -228,14 +237,12 @@ def test_versions_file_names_the_software():
         assert all(n in golden.read_text(encoding="utf-8") for n, _ in report.PACKAGES)
 
 
-def test_generation_is_byte_identical(generated, tmp_path):
+def test_generation_is_byte_identical(generated):
     """A second generation, in a fresh process with another hash seed (set orders differ),
     through the CLI, gives the same bytes."""
-    out, docs = generated
-    env = {**os.environ, "PYTHONHASHSEED": "12345"}
-    proc = subprocess.run([sys.executable, "-m", "quasicentral.cli", "report", "--all", "--out", str(tmp_path)],
-                          capture_output=True, text=True, env=env, cwd=tmp_path)
-    assert proc.returncode == 0, proc.stderr
+    out, docs, (proc, tmp_path) = generated
+    _, stderr = proc.communicate()
+    assert proc.returncode == 0, stderr
     for name, tex in docs.items():
         assert (tmp_path / name).read_text(encoding="utf-8") == tex, name
     assert sorted(p.name for p in tmp_path.glob("*.tex")) == sorted(docs)
@@ -248,7 +255,7 @@ def test_generation_is_byte_identical(generated, tmp_path):
 def test_every_figure_is_included(generated):
     from quasicentral.studies import figures
 
-    _, docs = generated
+    _, docs, _ = generated
     names = {f.name for f in report.figures_needed(docs)}
     assert names == {f.name for t in texts.shipped() for f in figures.of_text(t)}
 
@@ -265,7 +272,7 @@ def compiled(generated, tmp_path_factory):
     pdftotext of the PDF, pdftotext of page 1)."""
     if shutil.which("latexmk") is None or shutil.which("pdftotext") is None:
         pytest.skip("needs latexmk and pdftotext (./setup.sh installs them)")
-    src, docs = generated
+    src, docs, _ = generated
     out = tmp_path_factory.mktemp("pdf")
     shutil.copytree(src, out, dirs_exist_ok=True)
     names = [n for n in docs if n != report.VERSIONS_FILE]
@@ -403,7 +410,7 @@ def _counts(tex: str) -> tuple[int, ...]:
 
 
 def test_english_and_czech_documents_have_the_same_parts(generated):
-    _, docs = generated
+    _, docs, _ = generated
     for name, tex in docs.items():
         if name.endswith("-en.tex"):
             assert _counts(tex) == _counts(docs[name[:-7] + "-cs.tex"]), name
@@ -412,7 +419,7 @@ def test_english_and_czech_documents_have_the_same_parts(generated):
 def test_handouts_for_students_and_teachers(generated):
     from quasicentral.documents.prose import WORDS
 
-    _, docs = generated
+    _, docs, _ = generated
     for name, tex in docs.items():
         if name == report.VERSIONS_FILE:
             continue
@@ -425,7 +432,7 @@ def test_handouts_for_students_and_teachers(generated):
 
 
 def test_pdf_metadata_is_set(generated):
-    _, docs = generated
+    _, docs, _ = generated
     for name, tex in docs.items():
         if name == report.VERSIONS_FILE:
             continue
