@@ -152,7 +152,7 @@ def _outermost_integrals(expr: sp.Basic) -> list[sp.Integral]:
     return out
 
 
-QUADRATURE_EVALUATIONS = 20_000
+QUADRATURE_EVALUATIONS = 20_000  # integrand evaluations flint may spend before mpmath takes over
 QUADRATURE_GUARD_BITS = 20
 SMOOTH_END_RADIUS = 2.0 ** -30  # the disc around an end of the path that must be free of singularities
 
