@@ -268,6 +268,24 @@ def test_an_end_the_substitution_cannot_smooth_goes_to_tanh_sinh(case):
         assert abs(got - truth) <= abs(truth) * mpmath.mpf(10) ** (2 - dps), (dps, got, truth)
 
 
+_y = sp.Symbol("y", positive=True)
+
+
+@pytest.mark.parametrize("integral, exact", [
+    (sp.Integral(sp.Piecewise((t, t < _y), (_y, True)), (t, 0, 1)), lambda a: a - a ** 2 / 2),
+    (sp.Integral(sp.Integral(t, (t, 0, _y)) * _y, (_y, 0, t)), lambda a: a ** 4 / 8),
+    (sp.Integral(_y * t, (_y, 0, _y)), lambda a: a ** 3 / 2),
+], ids=["piecewise", "nested", "variable-as-limit"])
+def test_an_integrand_kept_whole_still_sees_its_outer_symbols(integral, exact):
+    """Conditions or bound variables inside an integrand: nothing is lifted out of it, but its
+    outer symbols still reach it (a Piecewise once saw a symbolic a > 0.5)."""
+    outer = tuple(sorted(integral.free_symbols, key=str))
+    f = bridge.mp_function(integral, outer)
+    with mpmath.workdps(30):
+        a = mpmath.mpf(1) / 2
+        assert abs(f(*[a for _ in outer]) - exact(a)) < mpmath.mpf(10) ** -25
+
+
 def test_cutting_the_path_stops_where_it_does_not_help(monkeypatch):
     """√(1 − 2ζ²) has a branch point inside [0, 1] (a mutant's integrand): four pieces do not
     improve tanh–sinh's error estimate, so the path is not cut into 16 and 64 (seconds each)."""

@@ -197,10 +197,14 @@ def prepare(integral: sp.Integral) -> Prepared:
             # ∫_lo^hi f dx = ∫_0^1 f(x(u))·2(hi − lo)·u du, x = lo + (hi − lo)u² or hi − (hi − lo)u²
             xs = lo + (hi - lo) * u**2 if at_lower else hi - (hi - lo) * u**2
             g = f.xreplace({x: xs}) * 2 * (hi - lo) * u
-            g = g.replace(lambda e: isinstance(e, sp.Pow) and not e.exp.is_Integer and e.base.has(u),
-                          lambda e: sp.factor(e.base) ** e.exp)
+            try:
+                g = g.replace(lambda e: isinstance(e, sp.Pow) and not e.exp.is_Integer and e.base.has(u),
+                              lambda e: sp.factor(e.base) ** e.exp)
+                bounded = not _singular(g.xreplace({u: 0}))
+            except (sp.PolynomialError, ValueError, TypeError, NotImplementedError):
+                bounded = False  # sympy cannot factor it: the path stays as it is
             smoothed.append((sp.Integral(g, (u, 0, 1)), False))
-            if _singular(g.xreplace({u: 0})):
+            if not bounded:
                 break
         else:
             pieces = smoothed
@@ -208,11 +212,16 @@ def prepare(integral: sp.Integral) -> Prepared:
     lifted = []
     for piece, _ in pieces:
         var, lo, hi = piece.limits[0]
-        if piece.function.has(sp.Integral, sp.Sum, sp.Derivative, sp.Piecewise):
-            lifted.append(piece)  # bound variables inside: nothing is lifted
-        else:
-            lo, hi = (end if end.is_number else _param(end, table) for end in (lo, hi))
-            lifted.append(sp.Integral(_lift(piece.function, var, table), (var, lo, hi)))
+        try:
+            if piece.function.has(sp.Integral, sp.Sum, sp.Derivative, sp.Piecewise):
+                raise TypeError("bound variables or conditions inside")
+            body = _lift(piece.function, var, table)
+        except (TypeError, ValueError, AttributeError):
+            # kept whole (bound variables inside, or a node that cannot be rebuilt from its
+            # arguments): only its outer symbols become parameters
+            body = piece.function.xreplace({sym: _param(sym, table) for sym in piece.function.free_symbols - {var}})
+        lo, hi = (end if end.is_number else _param(end, table) for end in (lo, hi))
+        lifted.append(sp.Integral(body, (var, lo, hi)))
     return Prepared(tuple((d, e) for e, d in table.items()), tuple(lifted), tuple(s for _, s in pieces))
 
 
