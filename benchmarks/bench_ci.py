@@ -7,7 +7,7 @@ cache; warm both as the whole run read back and from the per-entry verdicts), th
 
 Targets (issue "No wrong answer, no crash, no silence", on a 2-core machine): cold verify ≤ 20 s,
 warm ≤ 0.5 s, full mutate ≤ 3 minutes, default test run ≤ 3 minutes.  The numbers are printed,
-never asserted: compare them with the previous run's.
+never asserted: compare them with the previous runs' in benchmarks/RESULTS.md.
 """
 
 import os
