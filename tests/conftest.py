@@ -21,26 +21,41 @@ settings.register_profile("ci", derandomize=True, print_blob=True)
 settings.load_profile("ci" if os.environ.get("CI") else "default")
 
 
+@pytest.fixture(scope="session", autouse=True)
+def session_cache(tmp_path_factory, worker_id):
+    """One cache for the whole session, shared by the xdist workers and the processes they
+    start (never the user's own): a derivation computed by one of them is read back by the
+    others (quasicentral.engine.store); a test that needs a cold cache sets its own."""
+    path = _session_dir(tmp_path_factory, worker_id) / "verdict-cache"
+    before = os.environ.get("QUASICENTRAL_CACHE")
+    os.environ["QUASICENTRAL_CACHE"] = str(path)
+    yield path
+    if before is None:
+        os.environ.pop("QUASICENTRAL_CACHE", None)
+    else:
+        os.environ["QUASICENTRAL_CACHE"] = before
+
+
 @pytest.fixture(scope="session")
-def outcomes(tmp_path_factory, worker_id):
+def outcomes(session_cache, tmp_path_factory, worker_id):
     from filelock import FileLock
 
     from quasicentral.engine import run as verify
 
     shared = _session_dir(tmp_path_factory, worker_id)
-    os.environ["QUASICENTRAL_CACHE"] = str(shared / "verdict-cache")
     entries = texts.entries(texts.shipped())
     with FileLock(str(shared / "verdict-cache.lock")):
-        # cold for the first worker (the folder is new), read back by the others
+        # cold verdicts for the first worker (derivations other tests kept are read back),
+        # read back by the others
         got = verify.run(entries, Options(), use_cache=True)
     return dict(zip([e.id for e in entries], got))
 
 
 @pytest.fixture(scope="session")
 def verdict_cache(outcomes, tmp_path_factory, worker_id):
-    """The session's verdict cache, holding every shipped entry's verdict (see ``outcomes``):
-    a test that needs the shipped texts' verdicts but does not test their computation reads
-    them back from here."""
+    """The session's cache, holding every shipped entry's verdict (see ``outcomes``): a test
+    that needs the shipped texts' verdicts but does not test their computation reads them back
+    from here."""
     return _session_dir(tmp_path_factory, worker_id) / "verdict-cache"
 
 

@@ -362,12 +362,12 @@ def test_kill_9_of_verify_ends_its_workers(tmp_path):
 
 def test_die_with_parent_exits_when_already_orphaned():
     """The initializer's own check: a worker whose parent is not the expected one ends."""
-    from quasicentral.engine import run
+    from quasicentral.engine import workers
 
     pid = os.fork()
     if pid == 0:  # pragma: no cover - the child
         try:
-            run._die_with_parent(parent=os.getppid() + 10**7)
+            workers.die_with_parent(parent=os.getppid() + 10**7)
         finally:
             os._exit(0)
     _, status = os.waitpid(pid, 0)

@@ -56,6 +56,9 @@ class Options:
     early_stop_after: int = 6  # points evaluated before a refutation may stop the run early ...
     early_stop_disagreements: int = 3  # ... once this many of them disagree for good
     remembered_values: int = 50_000  # derived values kept for an erratum's second comparison
+    # False: a dimensionally inconsistent relation is refuted on its dimensions alone, without
+    # the numbers (and so without a witness) — it is refuted whatever they say
+    numbers_after_dimensions: bool = True
 
     MIN_DPS = 15  # below, the agreement tolerance 10^(−0.6·dps) would be too loose to mean anything
 
@@ -241,7 +244,7 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     fd_own, d_key = bridge.mp_function(d, d_args), sp.srepr(d)
 
     def fd(pt, dps):
-        key = (d_key, tuple(sp.srepr(pt[a]) for a in d_args), dps)
+        key = (d_key, tuple(pt[a] for a in d_args), dps)  # exact sympy numbers: hashed structurally
         if key not in _DERIVED_VALUES:
             if len(_DERIVED_VALUES) > opts.remembered_values:
                 _DERIVED_VALUES.clear()
@@ -263,6 +266,27 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     # The ladder, economically: every point on the first rung; the higher rungs where the first
     # does not agree (a difference must prove stable) and at the first few points (a true but
     # tiny difference, below the first rung's tolerance, shows at every point of the domain).
+    def divergent(series: bool = True) -> Verdict | None:
+        """A printed integral that diverges at an endpoint (integrand ~ |x − e|^(−q), q ≥ 1)
+        — or, with ``series``, a printed series whose terms grow — is refuted with that
+        reason: its quadratures only return noise."""
+        if not (p.has(sp.Integral) or (series and p.has(sp.Sum))):
+            return None
+        for pt in pts[:4]:
+            why = integral_divergence(p, pt) or (series and series_divergence(p, pt))
+            if why:
+                w = Witness(parameters={str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
+                            printed="divergent", corrected="", digits=0, certified=False, quantity=claim.quantity,
+                            relative_difference="inf", working_digits=opts.ladder[-1])
+                return Refuted(Method.NUMERIC, f"the printed form diverges: {why}", len(pts), opts.ladder, witness=w)
+        return None
+
+    # an endpoint where the printed integrand is not integrable is seen in four evaluations;
+    # its quadratures would cost seconds and return noise (a series is tested only where the
+    # numbers fail: its test sums in sympy)
+    dv_ = divergent(series=False)
+    if dv_ is not None:
+        return dv_
     rows = []  # per point: the rungs evaluated, each (pv, dv, diff, mag)
     early = False
     for i_pt, pt in enumerate(pts):
@@ -277,20 +301,6 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
         except (ValueError, ZeroDivisionError, TypeError, OverflowError, mpmath.libmp.NoConvergence):
             continue
         rows.append((pt, row))
-
-    def divergent() -> Verdict | None:
-        """A printed integral that diverges at an endpoint (integrand ~ |x − e|^(−q), q ≥ 1)
-        is refuted with that reason: its quadratures only return noise."""
-        if not (p.has(sp.Integral) or p.has(sp.Sum)):
-            return None
-        for pt in pts[:4]:
-            why = integral_divergence(p, pt) or series_divergence(p, pt)
-            if why:
-                w = Witness(parameters={str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
-                            printed="divergent", corrected="", digits=0, certified=False, quantity=claim.quantity,
-                            relative_difference="inf", working_digits=opts.ladder[-1])
-                return Refuted(Method.NUMERIC, f"the printed form diverges: {why}", len(pts), opts.ladder, witness=w)
-        return None
 
     if not early and len(rows) < max(3, (4 * len(pts) + 4) // 5):
         dv_ = divergent()
@@ -409,7 +419,14 @@ def _classify(rows, opts: Options) -> list[tuple[str, float]]:
 
 def _refuted_already(rows, opts) -> bool:
     """Enough points that already disagree for good."""
-    return (len(rows) >= opts.early_stop_after
+    if len(rows) < opts.early_stop_after:
+        return False
+    # a point can disagree only if its first rung does not agree even against its own magnitude
+    # (the scale floor only raises the reference): most runs stop here, without classifying
+    # every row again at every point
+    candidates = sum(len(r) > 1 and not (r[0][3] and _agrees(r[0][2], r[0][3], opts.ladder[0], opts))
+                     for _, r in rows)
+    return (candidates >= opts.early_stop_disagreements
             and sum(k == "disagree" for k, _ in _classify(rows, opts)) >= opts.early_stop_disagreements)
 
 
@@ -626,6 +643,9 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
     dim_problems = [c.reason for c in found if c.inconsistent]
     dim_text = ("inconsistent: " + "; ".join(dim_problems) if dim_problems
                 else "; ".join(str(c) for c in found) if found else "consistent")
+
+    if dim_problems and not opts.numbers_after_dimensions:
+        return Refuted(Method.DIMENSIONAL, "dimensionally inconsistent", dimensions=dim_text)
 
     def unsettled(reason: str) -> Verdict:
         # a relation whose two sides differ in dimension is wrong whatever the comparison

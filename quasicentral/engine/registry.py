@@ -21,6 +21,7 @@ may call :func:`derived` on another id, and each such call is recorded
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import functools
 import inspect
@@ -113,16 +114,57 @@ def derived(eid: str):
             raise RegistryError(f"no derivation registered for {eid!r}")
         func = REGISTRY[eid].func
         twin = next((e for e in _MEMO if REGISTRY[e].func is func), None)  # one step, several displays
+        store = _STORE[0] if _STORE[0] is not None and _STORE[0].keeps(REGISTRY[eid].module) else None
+        kept = store.load(eid) if store is not None and twin is None and _READ[0] else None
         if twin is not None:
             _MEMO[eid] = _MEMO[twin]
             _USED[eid] = set(_USED.get(twin, ()))
+        elif kept is not None:
+            _MEMO[eid], used = kept
+            _USED[eid] = set(used)
         else:
             _STACK.append(eid)
             try:
                 _MEMO[eid] = func()
             finally:
                 _STACK.pop()
+            if store is not None:
+                store.save(eid, _MEMO[eid], _USED.get(eid, ()), _reached(eid))
     return _MEMO[eid]
+
+
+def _reached(eid: str) -> set[str]:
+    """Every id the result of ``eid`` was built on, directly or through others."""
+    seen: set[str] = set()
+    todo = list(_USED.get(eid, ()))
+    while todo:
+        one = todo.pop()
+        if one not in seen:
+            seen.add(one)
+            todo.extend(_USED.get(one, ()))
+    return seen
+
+
+_STORE: list = [None]  # the DerivedStore of the active texts (quasicentral.engine.store), if any
+_READ = [True]  # whether kept results are read back
+
+
+def use_store(store) -> None:
+    """Keep results in ``store`` (a :class:`quasicentral.engine.store.DerivedStore`) and read
+    them back from it; None: compute every result in this process."""
+    _STORE[0] = store
+
+
+@contextlib.contextmanager
+def reading_kept(read: bool):
+    """With ``read=False`` (a cold run), every result is computed anew in this process (and its
+    forked workers), and still kept for the next."""
+    before = _READ[0]
+    _READ[0] = before and read
+    try:
+        yield
+    finally:
+        _READ[0] = before
 
 
 def shared(func):

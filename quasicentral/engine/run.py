@@ -12,21 +12,18 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-import signal
-import sys
-import threading
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import asdict
-from multiprocessing import get_context
 from pathlib import Path
 
 from quasicentral.engine import catalog, texts
 from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
 from quasicentral.engine.checker import Options, check
-from quasicentral.engine.registry import REGISTRY
+from quasicentral.engine.registry import REGISTRY, reading_kept
+from quasicentral.engine.workers import map_grouped
 from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Status, Verdict, Verified
 from quasicentral.files import write_text
 from quasicentral.progress import OptionalCallback, notify
+
 
 def verify_entry(entry: catalog.Entry, opts: Options) -> Outcome:
     text = texts.text_of(entry.id)
@@ -69,43 +66,6 @@ def _outcome_from_json(d: dict) -> Outcome:
 def _worker(args):
     eid, opts = args
     return eid, _outcome_json(verify_entry(texts.entry(eid), opts))
-
-
-PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
-
-
-def _die_with_parent(parent: int) -> None:
-    """Worker initializer: end this process when ``parent`` ends, even by ``kill -9``.
-
-    On Linux the kernel sends SIGKILL when the parent dies (``prctl(PR_SET_PDEATHSIG)``); as a
-    fallback (other systems, or no libc) a daemon thread checks every second whether the process
-    has been re-parented."""
-    if sys.platform.startswith("linux"):
-        try:
-            import ctypes
-
-            libc = ctypes.CDLL(None, use_errno=True)
-            libc.prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-        except (OSError, AttributeError):
-            pass
-    if os.getppid() != parent:  # the parent died before the signal was armed
-        os._exit(1)
-
-    def watch() -> None:
-        import time
-
-        while True:
-            time.sleep(1.0)
-            if os.getppid() != parent:
-                os._exit(1)
-
-    threading.Thread(target=watch, name="quasicentral-parent-watch", daemon=True).start()
-
-
-def worker_pool(jobs: int) -> ProcessPoolExecutor:
-    """A pool of ``jobs`` forked workers that end with this process (see :func:`_die_with_parent`)."""
-    return ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("fork"),
-                               initializer=_die_with_parent, initargs=(os.getpid(),))
 
 
 class CacheWarning(UserWarning):
@@ -186,23 +146,9 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
     todo = [e.id for e in entries if e.id not in results]
     cached = len(results)
     notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries")
+    with reading_kept(use_cache):
+        _compute(todo, opts, jobs, results, progress, len(entries), cached)
     if todo:
-        jobs = jobs or min(len(todo), os.cpu_count() or 1)
-        if jobs > 1 and len(todo) > 1:
-            # the costly entries (quadratures) first, so that the workers finish together
-            import sympy as sp
-
-            by_cost = sorted(todo, key=lambda i: not texts.entry(i).printed.has(sp.Integral))
-            with worker_pool(jobs) as pool:
-                futures = [pool.submit(_worker, (i, opts)) for i in by_cost]
-                for fut in as_completed(futures):
-                    eid, res = fut.result()
-                    results[eid] = res
-                    notify(progress, len(results), len(entries), eid, cached, "entries")
-        else:
-            for eid in todo:
-                results[eid] = _worker((eid, opts))[1]
-                notify(progress, len(results), len(entries), eid, cached, "entries")
         try:
             cdir.mkdir(parents=True, exist_ok=True)
             for eid in todo:
@@ -210,6 +156,35 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
         except OSError:
             pass  # a read-only cache is not an error
     return [_outcome_from_json(results[e.id]) for e in entries]
+
+
+def _compute(todo: list[str], opts: Options, jobs: int | None, results: dict, progress: OptionalCallback,
+             total: int, cached: int) -> None:
+    """The outcomes of ``todo`` into ``results``, on ``jobs`` forked workers."""
+    if not todo:
+        return
+    jobs = jobs or min(len(todo), os.cpu_count() or 1)
+    if jobs > 1 and len(todo) > 1:
+        def done(_args, got) -> None:
+            eid, res = got
+            results[eid] = res
+            notify(progress, len(results), total, eid, cached, "entries")
+
+        map_grouped(_worker, [[(i, opts) for i in g] for g in families(todo)], jobs, done)
+    else:
+        for eid in todo:
+            results[eid] = _worker((eid, opts))[1]
+            notify(progress, len(results), total, eid, cached, "entries")
+
+
+def families(ids: list[str]) -> list[list[str]]:
+    """``ids`` grouped by the module of their derivations (entries of one family build on the
+    same steps: a worker that keeps to one derives them once), in catalog order."""
+    out: dict[str, list[str]] = {}
+    for eid in ids:
+        der = REGISTRY.get(eid)
+        out.setdefault(der.module if der is not None else "", []).append(eid)
+    return list(out.values())
 
 
 def summary(outcomes: list[Outcome]) -> dict:

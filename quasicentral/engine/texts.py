@@ -32,7 +32,8 @@ from pathlib import Path
 from quasicentral.engine import errata as errata_mod
 from quasicentral.engine.fingerprint import SHIPPED_ROOT, TEXT_FILE, folder_fingerprint
 from quasicentral.engine.catalog import CatalogError, Entry, load_file, read_toml, where
-from quasicentral.engine.registry import REGISTRY, unregister, unregister_module
+from quasicentral.engine.registry import REGISTRY, unregister, unregister_module, use_store
+from quasicentral.engine.store import DerivedStore
 from quasicentral.notation.symbols import SymbolError, SymbolTable, table_from_toml
 
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*\Z")
@@ -61,6 +62,7 @@ class Text:
     citation: str = ""
     derivation_names: tuple[str, ...] | None = None
     _loaded: bool = field(default=False, repr=False)
+    loaded_fingerprint: str | None = field(default=None, repr=False)  # see load_derivations
 
     # --- the files -------------------------------------------------------------------------
     @property
@@ -80,6 +82,12 @@ class Text:
     @property
     def is_shipped(self) -> bool:
         return self.root.parent == SHIPPED_ROOT
+
+    @property
+    def module_prefix(self) -> str:
+        """The package name the text's derivation modules are imported under."""
+        return (f"derivations.{self.id}" if self.is_shipped
+                else f"quasicentral_text_{re.sub(r'[^A-Za-z0-9_]', '_', self.id)}")
 
     def fingerprint(self) -> str:
         """Hash of every file of the folder a verdict can depend on (see
@@ -132,6 +140,8 @@ class Text:
         if self._loaded:
             return
         entries = self.entries
+        # the files as the derivations are imported: their kept results are keyed by it
+        self.loaded_fingerprint = self.fingerprint()
         for path in self.derivation_files:
             if not path.is_file():
                 raise TextError(f"{self.root / TEXT_FILE}: derivations: no module {path.name}")
@@ -158,8 +168,7 @@ def _check_size(path: Path) -> None:
 
 def _import(text: Text, path: Path):
     """Import a module of the text's folder once (its derivations register themselves)."""
-    name = (f"derivations.{text.id}.{path.stem}" if text.is_shipped
-            else f"quasicentral_text_{re.sub(r'[^A-Za-z0-9_]', '_', text.id)}.{path.stem}")
+    name = f"{text.module_prefix}.{path.stem}"
     if name in sys.modules and getattr(sys.modules[name], "__file__", None) == str(path):
         # imported before (e.g. by a test): its derivations registered then
         return sys.modules[name]
@@ -332,6 +341,11 @@ def activate(texts: list[Text], exclusive: bool = False) -> list[Text]:
     for t in texts:
         t.load_derivations()
         _ACTIVE[t.id] = t
+    # derivation results are kept on disk per text (quasicentral.engine.store), keyed by the
+    # files of the texts active now
+    active_now = dict(_ACTIVE)
+    use_store(DerivedStore(lambda tid: active_now[tid].loaded_fingerprint if tid in active_now else None,
+                           frozenset(t.module_prefix for t in active_now.values())))
     return texts
 
 

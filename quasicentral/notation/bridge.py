@@ -129,8 +129,10 @@ def jet_of(sym: sp.Symbol) -> tuple[sp.Basic, int]:
     return _JETS[sym]
 
 
+@lru_cache(maxsize=1024)
 def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
-    """Compile ``expr`` for mpmath (cached by the caller).  Each definite integral becomes a
+    """Compile ``expr`` for mpmath (remembered: an erratum's printed and corrected forms share
+    their derived side, and a mutation run compiles it for every mutant).  Each definite integral becomes a
     call of :func:`_quadrature` (flint's Gauss–Legendre where it reaches the working precision,
     else mpmath's tanh–sinh)."""
     table = dict(MPMATH_NAMES)
@@ -340,6 +342,10 @@ def _arb_to_mpf(x):
 
 def mp_value(value: sp.Expr, dps: int):
     """An exact sympy number as an mpmath number at ``dps`` digits (plus guard digits)."""
+    if value.is_Rational:  # most points: rounded as sp.N would, without its evaluation machinery
+        from mpmath.libmp import dps_to_prec, from_rational
+
+        return mpmath.mpf(from_rational(int(value.p), int(value.q), dps_to_prec(dps + 10), "n"))
     num = sp.N(value, dps + 10)
     if num.is_real:
         return mpmath.mpf(sp.Float(num, dps + 10)._mpf_)

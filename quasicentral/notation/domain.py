@@ -14,6 +14,7 @@ from __future__ import annotations
 import hashlib
 import random
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import mpmath
 import sympy as sp
@@ -110,7 +111,7 @@ class Sampler:
         if missing:
             raise KeyError(f"no range declared for symbol {missing[0]}")
         # endpoints and constraints with the definitions applied, once
-        ends = {sym: tuple(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym]) for sym in order}
+        spans = {sym: _Span(*(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym])) for sym in order}
         constraints = [_Constraint(substitute_definitions(c, defs)) for c in self.domain.constraints]
         points = []
         tries = 0
@@ -118,8 +119,7 @@ class Sampler:
             tries += 1
             pt: dict[sp.Symbol, sp.Expr] = {}
             for sym in order:
-                lo, hi = (e.xreplace(pt) if e.free_symbols else e for e in ends[sym])
-                pt[sym] = lo + (hi - lo) * sp.Rational(rng.randrange(1, 2**20), 2**20)
+                pt[sym] = spans[sym].at(pt, sp.Rational(rng.randrange(1, 2**20), 2**20))
             if all(c.holds(pt) for c in constraints):
                 points.append(pt)
         return points
@@ -127,6 +127,43 @@ class Sampler:
 
 _DRAWN: dict = {}
 DRAWS_REMEMBERED = 2_000
+#: significant digits of a point drawn inside a range whose ends are irrational in earlier points
+DRAWN_DIGITS = 25
+
+
+class _Span:
+    """A symbol's range [lo, hi] (definitions applied), its ends possibly depending on symbols
+    drawn before it.
+
+    Where the ends are rational functions of those symbols, a point is lo + (hi − lo)·r exactly.
+    Where they are not (t up to 4K(sin²(φ0/2))/√(g/l)), the exact value would be a sympy
+    expression that every later evaluation has to take apart again: the point is instead the
+    rational of ``DRAWN_DIGITS`` significant digits nearest to lo + (hi − lo)·r (ends at 40
+    digits).  r is at least 2^-20 from 0 and 1, so the rounding keeps the point strictly inside
+    while the range is wider than 10^-17 of the value; a narrower one stays exact."""
+
+    def __init__(self, lo: sp.Expr, hi: sp.Expr):
+        self.ends = (lo, hi)
+        free = lo.free_symbols | hi.free_symbols
+        self.args = tuple(sorted(free, key=str))
+        rational = all(e.is_rational_function(*free) and not e.atoms(sp.NumberSymbol) and not e.has(sp.I)
+                       and all(n.is_Rational for n in e.atoms(sp.Number)) for e in self.ends)
+        self.compiled = None if not free or rational else sp.lambdify(self.args, [lo, hi], "mpmath")
+
+    def at(self, pt: dict, r: sp.Rational) -> sp.Expr:
+        if self.compiled is not None and all(pt[a].is_Rational for a in self.args):
+            try:
+                with mpmath.workdps(40):
+                    lo, hi = (mpmath.mpmathify(v) for v in self.compiled(*[_mp(pt[a]) for a in self.args]))
+                    if isinstance(lo, mpmath.mpf) and isinstance(hi, mpmath.mpf) and mpmath.isfinite(hi - lo):
+                        v = lo + (hi - lo) * r.p / r.q
+                        if hi - lo > abs(v) * mpmath.mpf(10) ** (8 - DRAWN_DIGITS):
+                            f = Fraction(mpmath.nstr(v, DRAWN_DIGITS, min_fixed=-mpmath.inf, max_fixed=mpmath.inf))
+                            return sp.Rational(f.numerator, f.denominator)
+            except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+                pass
+        lo, hi = (e.xreplace(pt) if e.free_symbols else e for e in self.ends)
+        return lo + (hi - lo) * r
 #: a constraint whose two sides differ by less than this (relative, at 30 digits) is decided exactly
 CONSTRAINT_MARGIN = 1e-20
 

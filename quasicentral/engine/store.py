@@ -1,0 +1,126 @@
+"""Derivation results kept on disk, so that each is computed once per code and texts — not once
+per process (the workers of a verification, a mutation run, the documents, the tests).
+
+A result is kept with the ids it used (:func:`quasicentral.engine.registry.actually_used`)
+under a hash of everything it can depend on: the checker's code and the libraries' versions
+(:func:`~quasicentral.engine.fingerprint.code_fingerprint`) and the files of every active text
+(a derivation may build on another text's).  Only the derivations of a text's own modules are
+kept: a step registered by other code (a test's scratch derivation) has no files to hash.
+
+The records are pickles (sympy's own serialisation: the one that round-trips every result of
+the shipped texts exactly, assumptions and undefined functions included).  Loading a pickle
+runs code, so a record is read only from a folder and a file of this user that nobody else
+may write; a record that cannot be read is computed anew.  A result holding a ``Dummy`` is not
+kept: a dummy is told apart by a counter of the process that made it, and another process
+could make an equal one.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import pickle
+import stat
+from pathlib import Path
+
+import sympy as sp
+
+from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
+from quasicentral.files import ensure_dir, write_bytes
+
+STORE_FOLDER = "derived"
+PICKLE_PROTOCOL = 5
+
+
+def _private(st: os.stat_result) -> bool:
+    """Owned by this user and writable by nobody else."""
+    return st.st_uid == os.getuid() and not st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+
+
+def _basics(value) -> list[sp.Basic]:
+    if isinstance(value, sp.Basic):
+        return [value]
+    if isinstance(value, dict):
+        return [b for kv in value.items() for x in kv for b in _basics(x)]
+    if isinstance(value, (list, tuple, set, frozenset)):
+        return [b for x in value for b in _basics(x)]
+    return []
+
+
+def _has_dummy(value) -> bool:
+    return any(b.has(sp.Dummy) for b in _basics(value))
+
+
+class DerivedStore:
+    """The records of the derivations of the text modules ``modules`` (module-name prefixes,
+    one per text folder).  ``fingerprint_of(tid)`` hashes a text's files (None: not an active
+    text); a record is keyed by the code, its own text's hash and its id, and names the hashes
+    of the other texts its result was built on, which must still be the same to be read."""
+
+    def __init__(self, fingerprint_of, modules: frozenset[str]):
+        self._fingerprint_of = fingerprint_of
+        self._fingerprints: dict[str, str | None] = {}
+        self.modules = modules
+
+    @property
+    def directory(self) -> Path:
+        return cache_dir() / STORE_FOLDER  # where the cache is now ($QUASICENTRAL_CACHE may change)
+
+    def keeps(self, module: str) -> bool:
+        return module.rpartition(".")[0] in self.modules
+
+    def _fingerprint(self, tid: str) -> str | None:
+        if tid not in self._fingerprints:
+            self._fingerprints[tid] = self._fingerprint_of(tid)
+        return self._fingerprints[tid]
+
+    def _path(self, eid: str) -> Path | None:
+        tid = eid.split(":", 1)[0]
+        own = self._fingerprint(tid)
+        if own is None:
+            return None
+        key = hashlib.sha256("\0".join((code_fingerprint(), tid, own, eid)).encode()).hexdigest()
+        return self.directory / f"{key}.pickle"
+
+    def load(self, eid: str) -> tuple[object, frozenset[str]] | None:
+        """The kept result of ``eid`` and the ids it used, or None (absent, unreadable, built on
+        another text that has changed since, or in a file or folder another user could have
+        written)."""
+        path = self._path(eid)
+        if path is None:
+            return None
+        try:
+            if not _private(os.stat(self.directory)):
+                return None
+            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+        except OSError:
+            return None
+        try:
+            with os.fdopen(fd, "rb") as fh:
+                if not _private(os.fstat(fh.fileno())):
+                    return None
+                value, used, others = pickle.load(fh)
+            if any(self._fingerprint(tid) != fp for tid, fp in others.items()):
+                return None
+            return value, frozenset(used)
+        except Exception:  # noqa: BLE001 - a damaged record is no result: computed anew
+            return None
+
+    def save(self, eid: str, value: object, used, built_on) -> None:
+        """Keep ``value``, which used the ids ``used`` and was built on the results of
+        ``built_on`` (every id its computation reached, directly or not).  A result that cannot
+        be kept (a dummy inside, no pickle, a read-only cache) is computed again next time."""
+        path = self._path(eid)
+        if path is None or _has_dummy(value):
+            return
+        own = eid.split(":", 1)[0]
+        others = {tid: self._fingerprint(tid) for tid in sorted({i.split(":", 1)[0] for i in built_on} - {own})}
+        if any(fp is None for fp in others.values()):
+            return
+        try:
+            data = pickle.dumps((value, sorted(used), others), protocol=PICKLE_PROTOCOL)
+            ensure_dir(self.directory)
+            os.chmod(self.directory, 0o700)
+            write_bytes(path, data)
+        except Exception:  # noqa: BLE001 - keeping a result is an optimisation, never an error
+            pass
