@@ -102,28 +102,67 @@ def test_the_store_keeps_only_what_it_can_tell_apart(tmp_path, monkeypatch):
     prints = {"t": "fp-t", "u": "fp-u"}
     store = DerivedStore(prints.get, frozenset({"mod"}))
     assert store.keeps("mod.steps") and not store.keeps("other.steps")
-    store.save("t:1", sp.Eq(sp.Dummy("x"), 1), (), ())  # a dummy: another process could make an equal one
-    assert store.load("t:1") is None
+    store.save("t:1", "mod.steps", sp.Eq(sp.Dummy("x"), 1), (), ())  # another process could make an equal dummy
+    store.save("t:3", "mod.steps", sp.Matrix([[sp.Dummy("y")]]), (), ())
+    assert store.load("t:1", "mod.steps") is None and store.load("t:3", "mod.steps") is None
     x = sp.Symbol("x", positive=True)
-    store.save("t:2", {x: sp.sqrt(x)}, ["u:1"], ["u:1", "u:0"])
-    assert store.load("t:2") == ({x: sp.sqrt(x)}, frozenset({"u:1"}))
-    assert DerivedStore({"t": "fp-t", "u": "fp-u, edited"}.get, frozenset()).load("t:2") is None  # built on u
-    assert DerivedStore({"t": "fp-t, edited", "u": "fp-u"}.get, frozenset()).load("t:2") is None
+    store.save("t:2", "mod.steps", {x: sp.sqrt(x)}, ["u:1"], {"t", "u"})
+    assert store.load("t:2", "mod.steps") == ({x: sp.sqrt(x)}, frozenset({"u:1"}), frozenset({"u"}))
+    assert store.load("t:2", "copy.steps") is None  # a copy of the text under another module name
+    assert DerivedStore({"t": "fp-t", "u": "fp-u, edited"}.get, frozenset()).load("t:2", "mod.steps") is None
+    assert DerivedStore({"t": "fp-t, edited", "u": "fp-u"}.get, frozenset()).load("t:2", "mod.steps") is None
     (tmp_path / STORE_FOLDER).chmod(0o777)  # a folder others may write: nothing in it is loaded
-    assert store.load("t:2") is None
+    assert store.load("t:2", "mod.steps") is None
     (tmp_path / STORE_FOLDER).chmod(0o700)
-    assert store.load("t:2") is not None
+    assert store.load("t:2", "mod.steps") is not None
 
 
 def test_a_record_is_a_plain_pickle_of_value_uses_and_other_texts(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
     store = DerivedStore({"t": "fp-t", "u": "fp-u"}.get, frozenset())
-    store.save("t:1", sp.Integer(3), ["u:1"], ["u:1"])
+    store.save("t:1", "m.s", sp.Integer(3), ["u:1"], ["t", "u"])
     (record,) = (tmp_path / STORE_FOLDER).glob("*.pickle")
     assert pickle.loads(record.read_bytes()) == (3, ["u:1"], {"u": "fp-u"})
     assert os.stat(tmp_path / STORE_FOLDER).st_mode & 0o777 == 0o700
 
 
+def test_a_result_read_back_passes_on_the_texts_it_was_built_on(tmp_path, monkeypatch):
+    """t:A uses t:B, which another process built (through t:C) on the text u: A's record must
+    name u too, though neither A nor B asked u for anything — or A would outlive an edit of u."""
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
+    value_of_d = [1]
+
+    def register():
+        registry.unregister("t")
+        registry.unregister("u")
+        steps = {"u:D": lambda: sp.Integer(value_of_d[0]),
+                 "t:C": lambda: registry.derived("u:D"),
+                 "t:B": lambda: registry.derived("t:C") + 1,
+                 "t:A": lambda: registry.derived("t:B") + 1}
+        for eid, body in steps.items():
+            def step(body=body):
+                """One step of the chain."""
+                return body()
+            step.__module__ = f"fake_{eid[0]}.steps"
+            registry.derives(eid)(step)
+
+    def new_process(fingerprints):
+        register()
+        registry.use_store(DerivedStore(fingerprints.get, frozenset({"fake_t", "fake_u"})))
+
+    before = registry.use_store(None)
+    try:
+        new_process({"t": "t1", "u": "u1"})
+        assert registry.derived("t:B") == 2  # process 1: B (and C, D) kept
+        new_process({"t": "t1", "u": "u1"})
+        assert registry.derived("t:A") == 3  # process 2: B read back, A computed and kept
+        value_of_d[0] = 100
+        new_process({"t": "t1", "u": "u2"})  # process 3: the text u was edited
+        assert registry.derived("t:A") == 102
+    finally:
+        registry.unregister("t")
+        registry.unregister("u")
+        registry.use_store(before)
 # --- the grouped pool ------------------------------------------------------------------------
 def test_each_worker_keeps_to_its_groups_then_takes_the_others_from_their_ends():
     orders = preference_orders([[0, 1, 2, 3], [4, 5], [6]], 2)
@@ -156,3 +195,44 @@ def _fails_at_three(x: int) -> int:
 def test_map_grouped_raises_a_workers_exception():
     with pytest.raises(ValueError, match="three"):
         map_grouped(_fails_at_three, [[1, 2, 3, 4], [5, 6]], 2, lambda item, res: None)
+
+
+def _big_or_fails(x: int) -> bytes:
+    if x == 0:
+        raise ValueError("zero")
+    return bytes(200_000)  # more than a pipe holds: a worker must not block on it after a failure
+
+
+def test_map_grouped_raises_even_with_results_nobody_reads():
+    with pytest.raises(ValueError, match="zero"):
+        map_grouped(_big_or_fails, [[0, 1, 2], [3, 4, 5, 6]], 2, lambda item, res: None)
+
+
+def _logged(args) -> int:
+    import time
+
+    path, x = args
+    time.sleep(0.01)  # 400 items: seconds of work, of which the first result stops the rest
+    with open(path, "a") as f:
+        f.write(f"{x}\n")
+    return x
+
+
+def test_an_error_in_the_callback_stops_the_workers(tmp_path):
+    log = tmp_path / "done.txt"
+    items = [(str(log), x) for x in range(400)]
+
+    def stop(item, res):
+        raise KeyError("enough")
+    with pytest.raises(KeyError, match="enough"):
+        map_grouped(_logged, [items[:200], items[200:]], 2, stop)
+    assert len(log.read_text().splitlines()) < len(items)  # the rest was never started
+
+
+def _unpicklable(x: int):
+    return lambda: x
+
+
+def test_a_result_that_cannot_be_sent_is_an_error_not_a_hang():
+    with pytest.raises(Exception, match="pickle"):
+        map_grouped(_unpicklable, [[1, 2], [3]], 2, lambda item, res: None)

@@ -263,30 +263,36 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
                 raise ValueError("not finite")
         return pv, dv, diff, mag
 
+    def divergent(before_numbers: bool = False) -> Verdict | None:
+        """A printed integral that diverges at an endpoint (integrand ~ |x − e|^(−q), q ≥ 1),
+        or a printed series whose terms grow, is refuted with that reason: its quadratures or
+        partial sums only return noise.  Where the numbers have failed, one of the first four
+        points showing it is enough; ``before_numbers``, the integrals alone are tested (a
+        series' test sums in sympy) and every one of the four points must show it."""
+        if not (p.has(sp.Integral) or (not before_numbers and p.has(sp.Sum))):
+            return None
+        seen = ((pt, integral_divergence(p, pt) or ("" if before_numbers else series_divergence(p, pt)))
+                for pt in pts[:4])
+        if before_numbers:
+            seen = list(seen)
+            if not seen or not all(why for _, why in seen):
+                return None
+        pt, why = next(((pt, why) for pt, why in seen if why), (None, ""))
+        if not why:
+            return None
+        w = Witness(parameters={str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
+                    printed="divergent", corrected="", digits=0, certified=False, quantity=claim.quantity,
+                    relative_difference="inf", working_digits=opts.ladder[-1])
+        return Refuted(Method.NUMERIC, f"the printed form diverges: {why}", len(pts), opts.ladder, witness=w)
+
+    # an endpoint where the printed integrand is not integrable is seen in a few evaluations,
+    # where its quadratures would cost seconds and return noise
+    dv_ = divergent(before_numbers=True)
+    if dv_ is not None:
+        return dv_
     # The ladder, economically: every point on the first rung; the higher rungs where the first
     # does not agree (a difference must prove stable) and at the first few points (a true but
     # tiny difference, below the first rung's tolerance, shows at every point of the domain).
-    def divergent(series: bool = True) -> Verdict | None:
-        """A printed integral that diverges at an endpoint (integrand ~ |x − e|^(−q), q ≥ 1)
-        — or, with ``series``, a printed series whose terms grow — is refuted with that
-        reason: its quadratures only return noise."""
-        if not (p.has(sp.Integral) or (series and p.has(sp.Sum))):
-            return None
-        for pt in pts[:4]:
-            why = integral_divergence(p, pt) or (series and series_divergence(p, pt))
-            if why:
-                w = Witness(parameters={str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
-                            printed="divergent", corrected="", digits=0, certified=False, quantity=claim.quantity,
-                            relative_difference="inf", working_digits=opts.ladder[-1])
-                return Refuted(Method.NUMERIC, f"the printed form diverges: {why}", len(pts), opts.ladder, witness=w)
-        return None
-
-    # an endpoint where the printed integrand is not integrable is seen in four evaluations;
-    # its quadratures would cost seconds and return noise (a series is tested only where the
-    # numbers fail: its test sums in sympy)
-    dv_ = divergent(series=False)
-    if dv_ is not None:
-        return dv_
     rows = []  # per point: the rungs evaluated, each (pv, dv, diff, mag)
     early = False
     for i_pt, pt in enumerate(pts):

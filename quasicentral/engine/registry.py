@@ -73,6 +73,7 @@ class Derivation:
 REGISTRY: dict[str, Derivation] = {}
 _MEMO: dict[str, object] = {}
 _USED: dict[str, set[str]] = {}
+_TEXTS: dict[str, set[str]] = {}  # the texts each result was built on, its own included (through any chain)
 _STACK: list = []  # the derivations (and shared helpers) being computed, innermost last
 _GENERATION = [0]  # counts changes of the registry: a shared helper's results are kept per generation
 
@@ -114,45 +115,39 @@ def derived(eid: str):
             raise RegistryError(f"no derivation registered for {eid!r}")
         func = REGISTRY[eid].func
         twin = next((e for e in _MEMO if REGISTRY[e].func is func), None)  # one step, several displays
-        store = _STORE[0] if _STORE[0] is not None and _STORE[0].keeps(REGISTRY[eid].module) else None
-        kept = store.load(eid) if store is not None and twin is None and _READ[0] else None
+        der = REGISTRY[eid]
+        store = _STORE[0] if _STORE[0] is not None and _STORE[0].keeps(der.module) else None
+        kept = store.load(eid, der.module) if store is not None and twin is None and _READ[0] else None
         if twin is not None:
             _MEMO[eid] = _MEMO[twin]
             _USED[eid] = set(_USED.get(twin, ()))
+            _TEXTS[eid] = set(_TEXTS.get(twin, {der.text}))
         elif kept is not None:
-            _MEMO[eid], used = kept
+            _MEMO[eid], used, built_on = kept
             _USED[eid] = set(used)
+            _TEXTS[eid] = {der.text} | set(built_on)
         else:
             _STACK.append(eid)
             try:
                 _MEMO[eid] = func()
             finally:
                 _STACK.pop()
+            _TEXTS[eid] = {der.text}.union(*(_TEXTS.get(u, {u.split(":", 1)[0]}) for u in _USED.get(eid, ())))
             if store is not None:
-                store.save(eid, _MEMO[eid], _USED.get(eid, ()), _reached(eid))
+                store.save(eid, der.module, _MEMO[eid], _USED.get(eid, ()), _TEXTS[eid])
     return _MEMO[eid]
-
-
-def _reached(eid: str) -> set[str]:
-    """Every id the result of ``eid`` was built on, directly or through others."""
-    seen: set[str] = set()
-    todo = list(_USED.get(eid, ()))
-    while todo:
-        one = todo.pop()
-        if one not in seen:
-            seen.add(one)
-            todo.extend(_USED.get(one, ()))
-    return seen
 
 
 _STORE: list = [None]  # the DerivedStore of the active texts (quasicentral.engine.store), if any
 _READ = [True]  # whether kept results are read back
 
 
-def use_store(store) -> None:
+def use_store(store):
     """Keep results in ``store`` (a :class:`quasicentral.engine.store.DerivedStore`) and read
-    them back from it; None: compute every result in this process."""
-    _STORE[0] = store
+    them back from it; None: compute every result in this process.  Returns the store used
+    before."""
+    before, _STORE[0] = _STORE[0], store
+    return before
 
 
 @contextlib.contextmanager
@@ -208,6 +203,7 @@ def unregister_module(module: str) -> None:
         REGISTRY.pop(eid)
         _MEMO.pop(eid, None)
         _USED.pop(eid, None)
+        _TEXTS.pop(eid, None)
     _GENERATION[0] += 1
 
 
@@ -217,6 +213,7 @@ def unregister(prefix: str) -> None:
         REGISTRY.pop(eid)
         _MEMO.pop(eid, None)
         _USED.pop(eid, None)
+        _TEXTS.pop(eid, None)
     _GENERATION[0] += 1
 
 

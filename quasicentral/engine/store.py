@@ -40,6 +40,8 @@ def _private(st: os.stat_result) -> bool:
 def _basics(value) -> list[sp.Basic]:
     if isinstance(value, sp.Basic):
         return [value]
+    if isinstance(value, sp.MatrixBase):
+        return list(value)
     if isinstance(value, dict):
         return [b for kv in value.items() for x in kv for b in _basics(x)]
     if isinstance(value, (list, tuple, set, frozenset)):
@@ -74,27 +76,33 @@ class DerivedStore:
             self._fingerprints[tid] = self._fingerprint_of(tid)
         return self._fingerprints[tid]
 
-    def _path(self, eid: str) -> Path | None:
+    def _path(self, eid: str, module: str) -> Path | None:
         tid = eid.split(":", 1)[0]
         own = self._fingerprint(tid)
         if own is None:
             return None
-        key = hashlib.sha256("\0".join((code_fingerprint(), tid, own, eid)).encode()).hexdigest()
+        key = hashlib.sha256("\0".join((code_fingerprint(), tid, own, module, eid)).encode()).hexdigest()
         return self.directory / f"{key}.pickle"
 
-    def load(self, eid: str) -> tuple[object, frozenset[str]] | None:
-        """The kept result of ``eid`` and the ids it used, or None (absent, unreadable, built on
-        another text that has changed since, or in a file or folder another user could have
-        written)."""
-        path = self._path(eid)
+    def load(self, eid: str, module: str) -> tuple[object, frozenset[str], frozenset[str]] | None:
+        """The kept result of ``eid`` (derived in ``module``), the ids it used and the other
+        texts it was built on; None when absent, unreadable, built on a text that has changed
+        since, or in a file or folder another user could have written."""
+        path = self._path(eid, module)
         if path is None:
             return None
         try:
-            if not _private(os.stat(self.directory)):
-                return None
-            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+            folder = os.open(self.directory, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW)
         except OSError:
             return None
+        try:
+            if not _private(os.fstat(folder)):
+                return None
+            fd = os.open(path.name, os.O_RDONLY | os.O_NOFOLLOW, dir_fd=folder)
+        except OSError:
+            return None
+        finally:
+            os.close(folder)
         try:
             with os.fdopen(fd, "rb") as fh:
                 if not _private(os.fstat(fh.fileno())):
@@ -102,25 +110,29 @@ class DerivedStore:
                 value, used, others = pickle.load(fh)
             if any(self._fingerprint(tid) != fp for tid, fp in others.items()):
                 return None
-            return value, frozenset(used)
+            return value, frozenset(used), frozenset(others)
         except Exception:  # noqa: BLE001 - a damaged record is no result: computed anew
             return None
 
-    def save(self, eid: str, value: object, used, built_on) -> None:
-        """Keep ``value``, which used the ids ``used`` and was built on the results of
-        ``built_on`` (every id its computation reached, directly or not).  A result that cannot
-        be kept (a dummy inside, no pickle, a read-only cache) is computed again next time."""
-        path = self._path(eid)
+    def save(self, eid: str, module: str, value: object, used, built_on) -> None:
+        """Keep ``value``, which used the ids ``used`` and was built on the results of the texts
+        ``built_on`` (through any chain of steps).  A result that cannot be kept (a dummy inside,
+        no pickle, a read-only cache) is computed again next time."""
+        path = self._path(eid, module)
         if path is None or _has_dummy(value):
             return
         own = eid.split(":", 1)[0]
-        others = {tid: self._fingerprint(tid) for tid in sorted({i.split(":", 1)[0] for i in built_on} - {own})}
+        others = {tid: self._fingerprint(tid) for tid in sorted(set(built_on) - {own})}
         if any(fp is None for fp in others.values()):
             return
         try:
             data = pickle.dumps((value, sorted(used), others), protocol=PICKLE_PROTOCOL)
             ensure_dir(self.directory)
-            os.chmod(self.directory, 0o700)
+            folder = os.open(self.directory, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW)
+            try:
+                os.fchmod(folder, 0o700)
+            finally:
+                os.close(folder)
             write_bytes(path, data)
         except Exception:  # noqa: BLE001 - keeping a result is an optimisation, never an error
             pass

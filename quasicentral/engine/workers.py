@@ -11,6 +11,7 @@ whole chain at the same time.
 from __future__ import annotations
 
 import os
+import pickle
 import queue as queue_mod
 import signal
 import sys
@@ -24,6 +25,7 @@ R = TypeVar("R")
 
 PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
 POLL_SECONDS = 0.5  # how often the parent looks at its workers while it waits for a result
+IDLE_SECONDS = 30.0  # how long results of workers that have all returned may take to arrive
 
 
 def die_with_parent(parent: int) -> None:
@@ -83,13 +85,17 @@ _SHARED: dict = {}  # what the forked workers of map_grouped read (set before th
 def _take_and_run(w: int) -> int:
     func, items, orders, claimed, lock, results = (
         _SHARED[k] for k in ("func", "items", "orders", "claimed", "lock", "results"))
+    # this process may end with results nobody reads (the parent gave up): never block on them
+    results.cancel_join_thread()
     done = 0
     for i in orders[w]:
         with lock:
             if claimed[i]:
                 continue
             claimed[i] = 1
-        results.put((i, func(items[i])))
+        # pickled here, so that a result that cannot be sent fails in this call, not silently
+        # in the queue's thread
+        results.put((i, pickle.dumps(func(items[i]), protocol=pickle.HIGHEST_PROTOCOL)))
         done += 1
     return done
 
@@ -98,7 +104,8 @@ def map_grouped(func: Callable[[T], R], groups: Sequence[Sequence[T]], jobs: int
                 on_result: Callable[[T, R], None]) -> None:
     """``on_result(item, func(item))`` for every item of ``groups``, in this process as each
     result arrives, computed on ``jobs`` forked workers (see the module's docstring).  An
-    exception in ``func`` is raised here."""
+    exception in ``func`` or ``on_result`` (or an interrupt) is raised here once every worker
+    has finished the item it was on; none starts another."""
     items = [x for g in groups for x in g]
     if not items:
         return
@@ -108,26 +115,37 @@ def map_grouped(func: Callable[[T], R], groups: Sequence[Sequence[T]], jobs: int
         start += len(g)
     ctx = get_context("fork")
     results = ctx.Queue()
+    claimed = ctx.RawArray("b", len(items))
     _SHARED.update(func=func, items=items, orders=preference_orders(index_groups, jobs),
-                   claimed=ctx.RawArray("b", len(items)), lock=ctx.Lock(), results=results)
+                   claimed=claimed, lock=ctx.Lock(), results=results)
     try:
         with worker_pool(jobs) as pool:
             futures = [pool.submit(_take_and_run, w) for w in range(jobs)]
-            received = 0
-            while received < len(items):
-                try:
-                    i, res = results.get(timeout=POLL_SECONDS)
-                except queue_mod.Empty:
-                    failed = next((f.exception() for f in futures if f.done() and f.exception()), None)
-                    if failed is not None:
-                        with _SHARED["lock"]:  # the other workers stop after their current item
-                            _SHARED["claimed"][:] = b"\1" * len(items)
-                        raise failed
-                    if all(f.done() for f in futures) and sum(f.result() for f in futures) < len(items):
-                        raise RuntimeError(f"the workers ended with {len(items) - received} items not done")
-                    continue  # (results of finished workers may still be on their way)
-                received += 1
-                on_result(items[i], res)
+            try:
+                _collect(futures, results, items, on_result)
+            except BaseException:
+                with _SHARED["lock"]:  # no worker starts another item
+                    claimed[:] = b"\1" * len(items)
+                raise
     finally:
         _SHARED.clear()
         results.close()
+
+
+def _collect(futures, results, items, on_result) -> None:
+    received, idle = 0, 0
+    while received < len(items):
+        try:
+            i, payload = results.get(timeout=POLL_SECONDS)
+        except queue_mod.Empty:
+            failed = next((f.exception() for f in futures if f.done() and f.exception()), None)
+            if failed is not None:
+                raise failed
+            if all(f.done() for f in futures):
+                # every worker has returned: what they sent is still on its way, for a moment
+                idle += 1
+                if idle * POLL_SECONDS > IDLE_SECONDS or sum(f.result() for f in futures) < len(items):
+                    raise RuntimeError(f"the workers ended with {len(items) - received} results not received")
+            continue
+        received += 1
+        on_result(items[i], pickle.loads(payload))

@@ -138,9 +138,11 @@ class _Span:
     Where the ends are rational functions of those symbols, a point is lo + (hi − lo)·r exactly.
     Where they are not (t up to 4K(sin²(φ0/2))/√(g/l)), the exact value would be a sympy
     expression that every later evaluation has to take apart again: the point is instead the
-    rational of ``DRAWN_DIGITS`` significant digits nearest to lo + (hi − lo)·r (ends at 40
-    digits).  r is at least 2^-20 from 0 and 1, so the rounding keeps the point strictly inside
-    while the range is wider than 10^-17 of the value; a narrower one stays exact."""
+    rational of ``DRAWN_DIGITS`` significant digits nearest to lo + (hi − lo)·r, the ends
+    computed at 40 and at 80 digits.  r is at least 2^-20 from 0 and 1, so the point stays
+    strictly inside while the two computations of the ends agree to 10^-12 of the width (an end
+    that cancels, 1 − cos x at tiny x, does not) and the width exceeds 10^-17 of the value;
+    otherwise, or where an end cannot be computed in mpmath, the point is exact."""
 
     def __init__(self, lo: sp.Expr, hi: sp.Expr):
         self.ends = (lo, hi)
@@ -148,22 +150,37 @@ class _Span:
         self.args = tuple(sorted(free, key=str))
         rational = all(e.is_rational_function(*free) and not e.atoms(sp.NumberSymbol) and not e.has(sp.I)
                        and all(n.is_Rational for n in e.atoms(sp.Number)) for e in self.ends)
-        self.compiled = None if not free or rational else sp.lambdify(self.args, [lo, hi], "mpmath")
+        self.compiled = None
+        if free and not rational:
+            try:
+                self.compiled = sp.lambdify(self.args, [lo, hi], "mpmath")
+            except Exception:  # noqa: BLE001 - an end lambdify cannot print: drawn exactly
+                self.compiled = None
+
+    def _ends(self, pt: dict, dps: int):
+        with mpmath.workdps(dps):
+            lo, hi = (mpmath.mpmathify(v) for v in self.compiled(*[_mp(pt[a]) for a in self.args]))
+        ok = isinstance(lo, mpmath.mpf) and isinstance(hi, mpmath.mpf) and mpmath.isfinite(hi - lo) and hi > lo
+        return (lo, hi) if ok else None
 
     def at(self, pt: dict, r: sp.Rational) -> sp.Expr:
         if self.compiled is not None and all(pt[a].is_Rational for a in self.args):
             try:
-                with mpmath.workdps(40):
-                    lo, hi = (mpmath.mpmathify(v) for v in self.compiled(*[_mp(pt[a]) for a in self.args]))
-                    if isinstance(lo, mpmath.mpf) and isinstance(hi, mpmath.mpf) and mpmath.isfinite(hi - lo):
-                        v = lo + (hi - lo) * r.p / r.q
-                        if hi - lo > abs(v) * mpmath.mpf(10) ** (8 - DRAWN_DIGITS):
+                coarse, fine = self._ends(pt, 40), self._ends(pt, 80)
+                if coarse is not None and fine is not None:
+                    with mpmath.workdps(80):
+                        (lo, hi), width = fine, fine[1] - fine[0]
+                        v = lo + width * r.p / r.q
+                        if (abs(coarse[0] - lo) + abs(coarse[1] - hi) <= width * mpmath.mpf(10) ** -12
+                                and width > abs(v) * mpmath.mpf(10) ** (8 - DRAWN_DIGITS)):
                             f = Fraction(mpmath.nstr(v, DRAWN_DIGITS, min_fixed=-mpmath.inf, max_fixed=mpmath.inf))
                             return sp.Rational(f.numerator, f.denominator)
-            except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+            except Exception:  # noqa: BLE001 - an end mpmath cannot compute (an undefined function): exact
                 pass
         lo, hi = (e.xreplace(pt) if e.free_symbols else e for e in self.ends)
         return lo + (hi - lo) * r
+
+
 #: a constraint whose two sides differ by less than this (relative, at 30 digits) is decided exactly
 CONSTRAINT_MARGIN = 1e-20
 
