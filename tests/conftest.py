@@ -3,6 +3,8 @@ temporary cache, on all cores); the parametrized tests then read their own outco
 pytest-xdist the first worker computes it and the others read the same verdict cache."""
 
 import os
+import shutil
+from pathlib import Path
 
 import pytest
 from hypothesis import settings
@@ -62,3 +64,11 @@ def verdict_cache(outcomes, tmp_path_factory, worker_id):
 def _session_dir(tmp_path_factory, worker_id):
     """One directory for the whole session: the parent of the xdist workers' own folders."""
     return tmp_path_factory.getbasetemp() if worker_id == "master" else tmp_path_factory.getbasetemp().parent
+
+
+@pytest.fixture
+def kepler(tmp_path) -> Path:
+    """A copy of the third text (tests/data/kepler), the user's own, to edit at will."""
+    folder = tmp_path / "kepler"
+    shutil.copytree(Path(__file__).parent / "data" / "kepler", folder)
+    return folder

@@ -7,7 +7,6 @@ from __future__ import annotations
 import dataclasses
 import os
 import pickle
-import shutil
 from pathlib import Path
 
 import pytest
@@ -17,7 +16,6 @@ from quasicentral.engine import registry, texts
 from quasicentral.engine.store import STORE_FOLDER, DerivedStore
 from quasicentral.engine.workers import map_grouped, preference_orders
 
-KEPLER = Path(__file__).parent / "data" / "kepler"
 
 
 @pytest.fixture
@@ -39,12 +37,6 @@ def _never(eid: str):
         raise AssertionError(f"{eid} was computed again")
     registry.REGISTRY[eid] = dataclasses.replace(registry.REGISTRY[eid], func=boom)
 
-
-@pytest.fixture
-def kepler(tmp_path) -> Path:
-    folder = tmp_path / "kepler"
-    shutil.copytree(KEPLER, folder)
-    return folder
 
 
 def test_a_result_is_kept_and_read_back_with_what_it_used(kepler, cache):

@@ -4,7 +4,6 @@ a user's mistake in it gets one clear line and exit 2 (or an inconclusive verdic
 from __future__ import annotations
 
 import json
-import shutil
 from pathlib import Path
 
 import pytest
@@ -13,7 +12,6 @@ from quasicentral import cli
 from quasicentral.engine import run, texts
 from quasicentral.engine.checker import Options
 
-KEPLER = Path(__file__).parent / "data" / "kepler"
 
 
 @pytest.fixture(autouse=True)
@@ -22,12 +20,6 @@ def _isolated(tmp_path, monkeypatch):
     yield
     texts.reset()
 
-
-@pytest.fixture
-def kepler(tmp_path) -> Path:
-    folder = tmp_path / "kepler"
-    shutil.copytree(KEPLER, folder)
-    return folder
 
 
 def _run(argv, capsys):

@@ -2,10 +2,13 @@
 per process (the workers of a verification, a mutation run, the documents, the tests).
 
 A result is kept with the ids it used (:func:`quasicentral.engine.registry.actually_used`)
-under a hash of everything it can depend on: the checker's code and the libraries' versions
-(:func:`~quasicentral.engine.fingerprint.code_fingerprint`) and the files of every active text
-(a derivation may build on another text's).  Only the derivations of a text's own modules are
-kept: a step registered by other code (a test's scratch derivation) has no files to hash.
+under a hash of what it can depend on: the checker's code and the libraries' versions
+(:func:`~quasicentral.engine.fingerprint.code_fingerprint`), the files of its text as they were
+when its derivations were imported, the module that derived it and its id.  A derivation may
+build on another text's results, through any chain of steps: the record names the hashes of
+those texts, and is read back only while they are unchanged.  Only the derivations of a text's
+own modules are kept: a step registered by other code (a test's scratch derivation) has no
+files to hash.
 
 The records are pickles (sympy's own serialisation: the one that round-trips every result of
 the shipped texts exactly, assumptions and undefined functions included).  Loading a pickle
