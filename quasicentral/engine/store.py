@@ -63,8 +63,7 @@ class DerivedStore:
     of the other texts its result was built on, which must still be the same to be read."""
 
     def __init__(self, fingerprint_of, modules: frozenset[str]):
-        self._fingerprint_of = fingerprint_of
-        self._fingerprints: dict[str, str | None] = {}
+        self._fingerprint = fingerprint_of
         self.modules = modules
 
     @property
@@ -73,11 +72,6 @@ class DerivedStore:
 
     def keeps(self, module: str) -> bool:
         return module.rpartition(".")[0] in self.modules
-
-    def _fingerprint(self, tid: str) -> str | None:
-        if tid not in self._fingerprints:
-            self._fingerprints[tid] = self._fingerprint_of(tid)
-        return self._fingerprints[tid]
 
     def _path(self, eid: str, module: str) -> Path | None:
         tid = eid.split(":", 1)[0]
