@@ -19,6 +19,7 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
+from quasicentral.notation.bridge import mp_lambdify
 from quasicentral.notation.symbols import SymbolTable
 
 Interval = tuple[sp.Expr, sp.Expr]
@@ -153,7 +154,7 @@ class _Span:
         self.compiled = None
         if free and not rational:
             try:
-                self.compiled = sp.lambdify(self.args, [lo, hi], "mpmath")
+                self.compiled = mp_lambdify(self.args, [lo, hi])
             except Exception:  # noqa: BLE001 - an end lambdify cannot print: drawn exactly
                 self.compiled = None
 
@@ -195,7 +196,7 @@ class _Constraint:
         if isinstance(constraint, sp.core.relational.Relational):
             self.args = tuple(sorted(constraint.free_symbols, key=str))
             diff = constraint.lhs - constraint.rhs
-            self.compiled = sp.lambdify(self.args, [diff, abs(constraint.lhs) + abs(constraint.rhs)], "mpmath")
+            self.compiled = mp_lambdify(self.args, [diff, abs(constraint.lhs) + abs(constraint.rhs)])
 
     def holds(self, pt: dict) -> bool:
         if self.compiled is not None and all(a in pt for a in self.args):
