@@ -109,7 +109,8 @@ def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
     """Replace each infinite ``Sum`` by the closed form sympy finds for it (lambdify cannot
     evaluate an infinite sum, and ``mpmath.nsum`` loses accuracy near the radius of
     convergence); a sum sympy cannot close stays, and its evaluation then fails honestly."""
-    return expr.replace(lambda e: isinstance(e, sp.Sum), _closed_sum)
+    # replace() walks and rebuilds the whole tree: only where there is a sum to close
+    return expr.replace(lambda e: isinstance(e, sp.Sum), _closed_sum) if expr.has(sp.Sum) else expr
 
 
 @lru_cache(maxsize=1024)
@@ -133,7 +134,8 @@ def _one_variable(f: sp.Basic) -> sp.Symbol | None:
 def to_jets(expr: sp.Basic) -> sp.Basic:
     """Evaluate derivatives of expressions, then name each function jet by a symbol: ``x(t)`` →
     ``x_t0``, ``x'(t)`` → ``x_t1``, ``u''(θ)`` → ``u_theta2`` (any independent variable)."""
-    expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    if expr.has(sp.Derivative):
+        expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
     repl = {}
     for d in expr.atoms(sp.Derivative):
         var = _one_variable(d.expr)

@@ -184,6 +184,9 @@ class _Span:
 
 #: a constraint whose two sides differ by less than this (relative, at 30 digits) is decided exactly
 CONSTRAINT_MARGIN = 1e-20
+#: a relation lhs ∘ rhs decided from the sign of lhs − rhs (far from zero: see CONSTRAINT_MARGIN)
+_SIGN_TEST = {sp.StrictLessThan: lambda d: d < 0, sp.LessThan: lambda d: d <= 0, sp.StrictGreaterThan: lambda d: d > 0,
+              sp.GreaterThan: lambda d: d >= 0, sp.Eq: lambda d: d == 0, sp.Ne: lambda d: d != 0}
 
 
 class _Constraint:
@@ -203,8 +206,9 @@ class _Constraint:
             try:
                 with mpmath.workdps(30):
                     diff, size = self.compiled(*[_mp(pt[a]) for a in self.args])
-                    if isinstance(diff, mpmath.mpf) and abs(diff) > CONSTRAINT_MARGIN * size:
-                        return bool(type(self.constraint)(sp.Float(diff._mpf_, 30), 0))
+                    test = _SIGN_TEST.get(type(self.constraint))
+                    if test is not None and isinstance(diff, mpmath.mpf) and abs(diff) > CONSTRAINT_MARGIN * size:
+                        return test(diff)
             except (TypeError, ValueError, ZeroDivisionError, OverflowError):
                 pass
         return _holds(self.constraint, pt)

@@ -24,6 +24,7 @@ from __future__ import annotations
 import keyword
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import sympy as sp
 
@@ -37,6 +38,7 @@ class SymbolError(ValueError):
     """A symbol table, a dimension or a transcription that cannot be read."""
 
 
+@lru_cache(maxsize=512)  # a text spells a few dimensions hundreds of times; sympify costs ~0.3 ms each
 def parse_dim(text: str) -> sp.Expr:
     """``'L^2/T'`` → L²/T in the base dimensions; ``'1'`` → 1.
 
