@@ -217,10 +217,28 @@ def _ftc_zero(diff: sp.Expr, force: bool = True) -> bool:
                 X, lower = lim[2], lim[1]
                 dd = sp.diff(diff, X)
                 if dd == 0 or _zero(dd, force):
-                    at_lower = diff.subs(X, lower).doit()
+                    # integrals over [a, a] vanish and those over [b, a] are −∫_a^b before sympy
+                    # tries to integrate them (for an elliptic integrand it would search for an
+                    # antiderivative until the bound): equal integrals then cancel as terms
+                    at_lower = diff.subs(X, lower).replace(lambda e: isinstance(e, sp.Integral), _oriented)
+                    if at_lower == 0:
+                        return True
+                    at_lower = at_lower.doit()
                     if at_lower == 0 or _zero(at_lower, False):
                         return True
     return False
+
+
+def _oriented(integral: sp.Integral) -> sp.Expr:
+    """A one-variable definite integral with numeric limits in increasing order (0 over an empty
+    path); any other integral as it is."""
+    if len(integral.limits) == 1 and len(integral.limits[0]) == 3:
+        var, lo, hi = integral.limits[0]
+        if lo == hi:
+            return sp.S.Zero
+        if lo.is_number and hi.is_number and (lo > hi) is sp.true:
+            return -sp.Integral(integral.function, (var, hi, lo))
+    return integral
 
 
 def _jet_ranges(syms) -> dict:
@@ -255,10 +273,10 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     # the derived side is shared by an erratum's printed and corrected forms (same points):
     # its values are remembered, keyed by the expression, the exact point and the digits
     d_args = tuple(sorted(d.free_symbols, key=str))
-    fd_own, d_key = bridge.mp_function(d, d_args), sp.srepr(d)
+    fd_own = bridge.mp_function(d, d_args)
 
     def fd(pt, dps):
-        key = (d_key, tuple(pt[a] for a in d_args), dps)  # exact sympy numbers: hashed structurally
+        key = (d, tuple(pt[a] for a in d_args), dps)  # the expression and exact numbers: hashed structurally
         if key not in _DERIVED_VALUES:
             if len(_DERIVED_VALUES) > opts.remembered_values:
                 _DERIVED_VALUES.clear()

@@ -323,15 +323,24 @@ def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singu
     except Unsupported:
         ball = None
     var, lo, hi = integral.limits[0]
-    x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
-    body = mp_lambdify((x,) + params, integral.function.xreplace({var: x}))
-    lower, upper = mp_lambdify(params, lo), mp_lambdify(params, hi)
+    compiled: list = []  # mpmath's integrand and limits, compiled when first needed
+
+    def mpmath_form():
+        if not compiled:
+            x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
+            compiled.extend((mp_lambdify((x,) + params, integral.function.xreplace({var: x})),
+                             mp_lambdify(params, lo), mp_lambdify(params, hi)))
+        return compiled
+
+    if ball is None:
+        mpmath_form()  # the only way: compiled now, as every other part of the expression
 
     def value(*vals):
         if ball is not None:
             got = _ball_quadrature(ball, params, vals)
             if got is not None:
                 return got
+        body, lower, upper = mpmath_form()
         return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)], singular=singular)
     return value
 
