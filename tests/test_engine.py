@@ -320,3 +320,115 @@ def test_ball_work_is_counted_not_timed():
     for _ in range(100):
         assert child.spend()
     assert not child.spend() and shared.spent and child.remaining() == 0
+
+
+# --- the cheaper means of proof and of evaluation --------------------------------------------------
+def test_identities_in_sines_and_cosines_are_proved_in_their_exponential_form(monkeypatch):
+    """Addition theorems and products of trigonometric functions of any argument (an undefined
+    function's included) are proved without simplify; a near miss is not."""
+    a, b = sp.symbols("a b", real=True)
+    f = sp.Function("f")(t)
+    calls = []
+    real_simplify = sp.simplify
+    monkeypatch.setattr(sp, "simplify", lambda *args, **kw: calls.append(1) or real_simplify(*args, **kw))
+    assert symbolic_zero(sp.sin(a + b) - sp.sin(a) * sp.cos(b) - sp.cos(a) * sp.sin(b), 5)
+    assert symbolic_zero(sp.cos(2 * f) - 1 + 2 * sp.sin(f) ** 2, 5)
+    assert symbolic_zero(sp.exp(-a) * (sp.sin(b) ** 2 - sp.cos(b) ** 2) + sp.exp(-a) * sp.cos(2 * b), 5)
+    assert calls == []
+    assert not symbolic_zero(sp.sin(a + b) - sp.sin(a) * sp.cos(b), 5)
+
+
+def test_integrals_over_an_empty_or_reversed_path_cancel_before_sympy_integrates():
+    """∫_0^ζ + ∫_1^0 = ∫_1^ζ for an elliptic integrand sympy cannot integrate: settled at
+    once (it used to spend the whole bound searching for an antiderivative at ζ = 1)."""
+    import time
+
+    u = sp.Symbol("u_", real=True)
+    f = (1 - u**2) / sp.sqrt((1 - u**2) * (1 - k**2 * u**2))
+    same = -sp.Integral(f, (u, 0, zeta)) - sp.Integral(f, (u, 1, 0)) + sp.Integral(f, (u, 1, zeta))
+    t0 = time.process_time()
+    assert symbolic_zero(same, 3.0)
+    assert time.process_time() - t0 < 2.0
+    assert not symbolic_zero(same + sp.Integral(f, (u, 0, 1)), 3.0)
+
+
+def test_ball_functions_evaluate_each_repeated_part_once_but_every_integral_on_its_own_budget():
+    """The generated ball function agrees with mpmath on every kind of node; a sub-expression
+    met twice is one line, an integral met twice spends its evaluations twice (so that a
+    report's certified digits do not depend on how an expression is written)."""
+    x = sp.Symbol("x", positive=True)
+    e = (sp.sin(x) ** 2 + sp.cos(x) ** 2 * sp.exp(x) / 3 + sp.sqrt(1 + x) ** 3 + x ** sp.Rational(-1, 2)
+         + sp.atan(x) * sp.pi - sp.log(x + sp.E) + sp.elliptic_k(x / 4) + sp.elliptic_f(x, sp.Rational(1, 3))
+         + sp.elliptic_e(x, sp.Rational(1, 5)) + sp.elliptic_e(x / 7) + sp.acot(x) + sp.factorial(5) + x ** x
+         + sp.Abs(x - 2) + sp.I * x)
+    pt = {x: sp.Rational(3, 7)}
+    ball = bridge.arb_eval(e, pt, prec=200)
+    with mpmath.workdps(60):
+        ref = bridge.mp_eval(e, pt, 60)
+        got = mpmath.mpc(ball.real.mid().str(60, radius=False), ball.imag.mid().str(60, radius=False))
+        assert abs(got - ref) < mpmath.mpf(10) ** -50
+    assert ball.rad() < 1e-55
+    source = bridge._Source()
+    source.emit(sp.sin(x) * sp.sin(x + 1) + sp.sin(x) ** 3)
+    assert sum("sin()" in line for line in source.lines) == 2  # sin(x) once, sin(x + 1) once
+    integral = sp.Integral(sp.sqrt(1 + x * zeta ** 2), (zeta, 0, 1))
+    once, twice = bridge.Work(100_000), bridge.Work(100_000)
+    bridge.arb_eval(integral, pt, prec=120, work=once)
+    bridge.arb_eval(integral * (integral + 1), pt, prec=120, work=twice)
+    assert 100_000 - twice.left == 2 * (100_000 - once.left) > 0
+
+
+def test_a_long_path_at_high_precision_stays_with_flint(monkeypatch):
+    """The evaluation budget grows with the working precision: at 170 digits the twenty-radian
+    oscillating path is flint's (it took mpmath 20 times as long), and right."""
+    a, b = sp.Integer(1), sp.Rational(2513, 10000)
+    z, integral = _oscillating(a, b)
+    f = bridge.mp_function(integral, (z,))
+    end = mpmath.mpf("-19.484672")
+    with mpmath.workdps(190):
+        g = bridge.mp_function(integral.function, (t,))
+        exact = _reference(g, mpmath.pi / 2, end, 190)
+
+    def refuse(*args, **kw):
+        raise AssertionError("mpmath's quadrature was used")
+
+    monkeypatch.setattr(bridge, "_quad", refuse)
+    with mpmath.workdps(170):
+        got = f(end)
+    with mpmath.workdps(190):
+        assert abs(got - exact) <= abs(exact) * mpmath.mpf(10) ** -168
+
+
+@pytest.mark.parametrize("dps", [15, 30, 60, 120])
+def test_elliptic_functions_through_flint_agree_with_mpmath(dps):
+    """K(m), F(φ, m), E(m), E(φ, m) (parameter m = k²) through python-flint to the working
+    precision, m < 1 and any real φ; complex arguments and m ≥ 1 are mpmath's own."""
+    import random
+
+    names = bridge.MPMATH_NAMES
+    rng = random.Random(dps)
+    with mpmath.workdps(dps):
+        tol = mpmath.mpf(10) ** (1 - dps)
+        for _ in range(40):
+            m, phi = mpmath.mpf(rng.uniform(-6, 0.9999)), mpmath.mpf(rng.uniform(-25, 25))
+            for name, args, ref in [("elliptic_k", (m,), mpmath.ellipk), ("elliptic_f", (phi, m), mpmath.ellipf),
+                                    ("elliptic_e", (m,), mpmath.ellipe), ("elliptic_e", (phi, m), mpmath.ellipe)]:
+                got = names[name](*args)
+                with mpmath.workdps(dps + 20):
+                    want = ref(*args)
+                    assert abs(got - want) <= tol * abs(want), (name, args)
+        for name, args, ref in [("elliptic_k", (mpmath.mpf(2),), mpmath.ellipk),
+                                ("elliptic_e", (mpmath.mpc(0.3, 0.2),), mpmath.ellipe),
+                                ("elliptic_f", (mpmath.mpf(1), mpmath.mpf(3)), mpmath.ellipf)]:
+            assert names[name](*args) == ref(*args)
+
+
+def test_constraints_are_decided_from_the_sign_as_sympy_decides_them():
+    from quasicentral.notation.domain import _Constraint
+
+    x, y = sp.symbols("x y", real=True)
+    for rel in (sp.Lt, sp.Le, sp.Gt, sp.Ge, sp.Eq, sp.Ne):
+        c = _Constraint(rel(x ** 2, y))
+        for px, py in ((sp.Rational(1, 3), sp.Rational(1, 2)), (2, 1), (sp.Rational(-7, 5), 2)):
+            pt = {x: sp.sympify(px), y: sp.sympify(py)}
+            assert c.holds(pt) == bool(rel(pt[x] ** 2, pt[y])), (rel, px, py)

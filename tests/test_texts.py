@@ -79,6 +79,26 @@ def test_shipped_and_user_texts_together(kepler, capsys, monkeypatch, verdict_ca
     assert {r["text"] for r in json.loads(out)["equations"]} == {"kepler", "pendulum"}
 
 
+def test_the_latex_parser_check_is_kept_per_text(kepler, capsys, monkeypatch, tmp_path):
+    """catalog keeps each entry's parser answer in the cache: a second run reads every one
+    back (the same document); an edited text is parsed anew, a damaged record too."""
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
+    code, first, err = _run(["catalog", "--text", str(kepler), "--json"], capsys)
+    assert code == 0, err
+    code, _, err = _run(["catalog", "--text", str(kepler)], capsys)
+    assert code == 0 and err.strip().endswith("(parsed: 0, read from the cache: 3)"), err
+    code, again, _ = _run(["catalog", "--text", str(kepler), "--json"], capsys)
+    assert again == first
+    kept = sorted((tmp_path / "cache" / "latex-parser").glob("*.json"))
+    assert len(kept) == 3
+    kept[0].write_text("{not json")
+    code, _, err = _run(["catalog", "--text", str(kepler)], capsys)
+    assert err.strip().endswith("(parsed: 1, read from the cache: 2)"), err
+    _edit(kepler / "catalog" / "orbit.toml", 'number = "2"', 'number = "2 "')
+    code, _, err = _run(["catalog", "--text", str(kepler)], capsys)
+    assert code == 0 and err.strip().endswith("(parsed: 3, read from the cache: 0)"), err
+
+
 def _edit(path: Path, old: str, new: str) -> None:
     text = path.read_text()
     assert old in text

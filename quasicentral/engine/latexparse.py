@@ -127,16 +127,75 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
     return True
 
 
-def coverage(entries: list[Entry], progress=None) -> dict:
-    """Per entry, which backends read it correctly; and the totals.  ``progress`` (a
-    :class:`quasicentral.progress.Progress` callback) is told of each entry."""
+def coverage(entries: list[Entry], progress=None, use_cache: bool = True) -> dict:
+    """Per entry, which backends read it correctly; and the totals.  Each entry's answer is
+    kept in the verdict cache under the code (sympy's version included) and its text's files:
+    a parse costs up to seconds (lark's Earley parser), and the answer cannot change while
+    neither does.  ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told
+    of each entry; the totals' ``cached`` says how many were read back."""
     from quasicentral.progress import notify
 
+    keys = _cache_keys(entries)
     per: dict[str, dict[str, bool]] = {}
-    notify(progress, 0, len(entries), "", 0, "entries parsed")
-    for i, e in enumerate(entries):
+    cached = 0
+    for e in entries:
+        got = _read(keys[e.id]) if use_cache else None
+        if got is not None:
+            per[e.id] = got
+            cached += 1
+    notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries parsed")
+    for e in entries:
+        if e.id in per:
+            continue
         per[e.id] = {b: parse_agrees(e, b) for b in BACKENDS}
-        notify(progress, i + 1, len(entries), e.id, 0, "entries parsed")
+        _write(keys[e.id], per[e.id])
+        notify(progress, len(per), len(entries), e.id, cached, "entries parsed")
+    per = {e.id: per[e.id] for e in entries}
     summary = {"entries": len(entries), **{b: sum(v[b] for v in per.values()) for b in BACKENDS},
                "any": sum(any(v.values()) for v in per.values())}
-    return {"entries": per, "summary": summary}
+    return {"entries": per, "summary": summary, "cached": cached}
+
+
+def _cache_keys(entries: list[Entry]) -> dict[str, str]:
+    import hashlib
+    import json
+
+    from quasicentral.engine import texts
+    from quasicentral.engine.fingerprint import code_fingerprint
+
+    code = code_fingerprint()
+    text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
+    return {e.id: hashlib.sha256(json.dumps(["latex-parser", code, text_fp[e.text], e.id, BACKENDS]).encode()
+                                 ).hexdigest() for e in entries}
+
+
+def _cache_file(key: str):
+    from quasicentral.engine.fingerprint import cache_dir
+
+    return cache_dir() / "latex-parser" / f"{key}.json"
+
+
+def _read(key: str) -> dict[str, bool] | None:
+    """A kept answer, checked (a damaged or foreign file is parsed anew)."""
+    import json
+
+    try:
+        got = json.loads(_cache_file(key).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if isinstance(got, dict) and set(got) == set(BACKENDS) and all(isinstance(v, bool) for v in got.values()):
+        return {b: got[b] for b in BACKENDS}
+    return None
+
+
+def _write(key: str, answer: dict[str, bool]) -> None:
+    import json
+
+    from quasicentral.files import write_text
+
+    path = _cache_file(key)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_text(path, json.dumps(answer, sort_keys=True))
+    except OSError:
+        pass  # a read-only cache is not an error
