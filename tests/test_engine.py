@@ -349,7 +349,7 @@ def test_integrals_over_an_empty_or_reversed_path_cancel_before_sympy_integrates
     t0 = time.process_time()
     assert symbolic_zero(same, 3.0)
     assert time.process_time() - t0 < 2.0
-    assert not symbolic_zero(same + sp.Integral(f, (u, 0, 1)), 3.0)
+    assert not symbolic_zero(same + sp.Integral(f, (u, 0, 1)), 0.5)
 
 
 def test_ball_functions_evaluate_each_repeated_part_once_but_every_integral_on_its_own_budget():
@@ -379,24 +379,27 @@ def test_ball_functions_evaluate_each_repeated_part_once_but_every_integral_on_i
 
 
 def test_a_long_path_at_high_precision_stays_with_flint(monkeypatch):
-    """The evaluation budget grows with the working precision: at 170 digits the twenty-radian
+    """The evaluation budget grows with the working precision: at 250 digits the twenty-radian
     oscillating path is flint's (it took mpmath 20 times as long), and right."""
     a, b = sp.Integer(1), sp.Rational(2513, 10000)
     z, integral = _oscillating(a, b)
     f = bridge.mp_function(integral, (z,))
-    end = mpmath.mpf("-19.484672")
-    with mpmath.workdps(190):
-        g = bridge.mp_function(integral.function, (t,))
-        exact = _reference(g, mpmath.pi / 2, end, 190)
+    end = mpmath.mpf("-19.484672")  # the same binary number at every precision
+    sign, man, exp, _ = end._mpf_
+    exact_end = (-1) ** sign * sp.Integer(int(man)) * sp.Integer(2) ** int(exp)
+    reference = bridge.arb_eval(integral.subs(z, exact_end), {}, prec=1000)  # a rigorous enclosure
+    assert reference.rad() < sp.Float(10) ** -280
+    with mpmath.workdps(280):
+        exact = mpmath.mpf(reference.real.mid().str(290, radius=False))
 
     def refuse(*args, **kw):
         raise AssertionError("mpmath's quadrature was used")
 
     monkeypatch.setattr(bridge, "_quad", refuse)
-    with mpmath.workdps(170):
+    with mpmath.workdps(250):
         got = f(end)
-    with mpmath.workdps(190):
-        assert abs(got - exact) <= abs(exact) * mpmath.mpf(10) ** -168
+    with mpmath.workdps(280):
+        assert abs(got - exact) <= abs(exact) * mpmath.mpf(10) ** -248
 
 
 @pytest.mark.parametrize("dps", [15, 30, 60, 120])
