@@ -5,7 +5,7 @@ idle one, so verdicts and the reports built from them do not depend on the load.
 
 * :func:`time_limit` interrupts a block (SIGVTALRM; main thread only, elsewhere unbounded) by
   raising :class:`TimeLimitExceeded`, a ``BaseException`` so that sympy's ``except Exception``
-  cannot swallow it;
+  cannot swallow it — and again until the block has ended, where Python itself swallowed it;
 
 Where a bound decides what a user keeps (a witness's certified digits in a report), a CPU-time
 bound would make the document depend on the machine: that work is bounded by counting it
@@ -23,20 +23,29 @@ class TimeLimitExceeded(BaseException):
     """A block ran past its CPU-time bound."""
 
 
+#: once the bound is past, the interruption is raised again every this many seconds of CPU time
+#: until the block has ended: an exception raised where Python ignores exceptions (a garbage
+#: collector's callback, a finalizer such as the one lambdify registers) would lose the bound
+RETRY_SECONDS = 0.05
+
+
 @contextmanager
 def time_limit(seconds: float):
     """Bound the block's CPU time to ``seconds`` (≤ 0: unbounded)."""
     if seconds <= 0 or threading.current_thread() is not threading.main_thread():
         yield
         return
+    active = [True]
 
     def handler(signum, frame):
-        raise TimeLimitExceeded()
+        if active[0]:
+            raise TimeLimitExceeded()
 
     old = signal.signal(signal.SIGVTALRM, handler)
-    signal.setitimer(signal.ITIMER_VIRTUAL, seconds)
+    signal.setitimer(signal.ITIMER_VIRTUAL, seconds, RETRY_SECONDS)
     try:
         yield
     finally:
+        active[0] = False
         signal.setitimer(signal.ITIMER_VIRTUAL, 0)
         signal.signal(signal.SIGVTALRM, old)
