@@ -23,11 +23,13 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def timed(argv: list[str], env: dict) -> tuple[float, int, str]:
-    """Wall time, exit code and the last line the command printed."""
+    """Wall time, exit code and the last line the command printed (a library's warning
+    excepted: pytest's summary is on stdout, its plugins' warnings on stderr)."""
     t0 = time.perf_counter()
     proc = subprocess.run(argv, cwd=ROOT, env=env, capture_output=True, text=True)
-    lines = (proc.stdout + proc.stderr).strip().splitlines()
-    return time.perf_counter() - t0, proc.returncode, lines[-1] if lines else ""
+    lines = [line for line in (proc.stdout + "\n" + proc.stderr).splitlines()
+             if line.strip() and "Warning" not in line and "warner(" not in line]
+    return time.perf_counter() - t0, proc.returncode, lines[-1].strip() if lines else ""
 
 
 def main() -> None:

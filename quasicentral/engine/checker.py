@@ -9,8 +9,10 @@ A *claim* is a pair of expressions that should be equal on the declared domain. 
    every rung of the ladder; agreement must hold on every rung, a disagreement must be stable
    from rung to rung;
 3. symbolic, unless the numbers already refute (then no simplification can return 0):
-   ``simplify(p − d) == 0`` within a CPU-time bound; for an integral with a variable upper
-   limit X, the fundamental theorem: d/dX (p − d) = 0 and (p − d) = 0 at the lower limit.
+   p − d proved 0 within a CPU-time bound, cheapest means first (expansion and cancellation;
+   the exponential form of sines and cosines; ``simplify``; radicals combined as if positive);
+   for an integral with a variable upper limit X, the fundamental theorem: d/dX (p − d) = 0
+   and (p − d) = 0 at the lower limit.
    A proof makes the verdict "verified, symbolic"; a proof the numbers contradict is not
    trusted (inconclusive);
 4. certified: the worst disagreement re-evaluated in python-flint balls; a ball for p − d that
