@@ -189,10 +189,12 @@ def build_parser() -> argparse.ArgumentParser:
 
     c = _command(sub, "catalog", "list the catalog: ids, dimensions, LaTeX-parser coverage",
                  "Lists every entry with its id (for verify --id), section and dimensions, and which of sympy's\n"
-                 "LaTeX parsers read its printed form back correctly.",
+                 "LaTeX parsers read its printed form back correctly (each answer kept in the cache).",
                  "quasicentral catalog\nquasicentral catalog --text mynotes --json")
     _add_text_options(c)
     c.add_argument("--json", action="store_true", help="print a JSON document instead of the table")
+    c.add_argument("--no-cache", action="store_true",
+                   help="parse every entry's LaTeX anew (default: read the kept answers back)")
     return p
 
 
@@ -557,7 +559,7 @@ def _catalog(args) -> int:
     entries = _selected(args)
     t0 = time.perf_counter()
     with ProgressBar(args, "catalog") as bar:
-        cov = latexparse.coverage(entries, progress=bar)
+        cov = latexparse.coverage(entries, progress=bar, use_cache=not args.no_cache)
     seconds = time.perf_counter() - t0
     doc = output.catalog_document(entries, cov)
     if args.json:

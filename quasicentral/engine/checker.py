@@ -238,7 +238,7 @@ def _oriented(integral: sp.Integral) -> sp.Expr:
         var, lo, hi = integral.limits[0]
         if lo == hi:
             return sp.S.Zero
-        if lo.is_number and hi.is_number and (lo > hi) is sp.true:
+        if lo.is_comparable and hi.is_comparable and (lo > hi) is sp.true:
             return -sp.Integral(integral.function, (var, hi, lo))
     return integral
 

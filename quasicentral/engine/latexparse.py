@@ -163,10 +163,25 @@ def _cache_keys(entries: list[Entry]) -> dict[str, str]:
     from quasicentral.engine import texts
     from quasicentral.engine.fingerprint import code_fingerprint
 
-    code = code_fingerprint()
+    code = code_fingerprint()  # the checker's code and sympy's version among others
+    parsers = _parser_versions()
     text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
-    return {e.id: hashlib.sha256(json.dumps(["latex-parser", code, text_fp[e.text], e.id, BACKENDS]).encode()
-                                 ).hexdigest() for e in entries}
+    return {e.id: hashlib.sha256(json.dumps(["latex-parser", code, parsers, text_fp[e.text], e.id, BACKENDS]
+                                            ).encode()).hexdigest() for e in entries}
+
+
+def _parser_versions() -> list[str]:
+    """The versions of the parser runtimes sympy's backends use (a missing one is named so:
+    its answers are not kept for when it is installed)."""
+    from importlib import metadata
+
+    out = []
+    for dist in ("lark", "antlr4-python3-runtime"):
+        try:
+            out.append(f"{dist}=={metadata.version(dist)}")
+        except metadata.PackageNotFoundError:
+            out.append(f"{dist} missing")
+    return out
 
 
 def _cache_file(key: str):
@@ -179,8 +194,11 @@ def _read(key: str) -> dict[str, bool] | None:
     """A kept answer, checked (a damaged or foreign file is parsed anew)."""
     import json
 
+    path = _cache_file(key)
+    if not path.is_file():  # a FIFO or a device in its place is not read (it could block)
+        return None
     try:
-        got = json.loads(_cache_file(key).read_text(encoding="utf-8"))
+        got = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):
         return None
     if isinstance(got, dict) and set(got) == set(BACKENDS) and all(isinstance(v, bool) for v in got.values()):

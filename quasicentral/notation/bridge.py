@@ -535,11 +535,15 @@ class _Source:
         return var
 
     def code(self, e: sp.Basic) -> str:  # noqa: C901 - one dispatch table
+        import flint
+
         if isinstance(e, sp.Symbol):
             return f"env[{self.constant(e)}]"
         if e.is_Rational:
             p, q = int(e.p), int(e.q)
-            return f"acb({p})" if q == 1 and abs(p) < _EXACT_INTEGER else f"acb(arb(fmpq({p}, {q})))"
+            if q == 1 and abs(p) < _EXACT_INTEGER:
+                return f"acb({p})"
+            return f"acb(arb({self.constant(flint.fmpq(p, q))}))"  # exact; not as text (4300-digit limit)
         if e is sp.pi:
             return "acb(arb.pi())"
         if e is sp.E:
@@ -572,7 +576,7 @@ class _Source:
         if isinstance(e, sp.elliptic_e):
             return f"acb.elliptic_e({self.emit(e.args[0])})"
         if isinstance(e, sp.factorial) and e.args[0].is_Integer:
-            return f"acb({int(sp.factorial(e.args[0]))})"
+            return f"acb({self.constant(int(sp.factorial(e.args[0])))})"
         if isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 3:
             return f"{self.constant(_compile_integral(e))}(env, an, work)"
         raise Unsupported(f"no ball evaluation for {e.func.__name__}")
@@ -585,7 +589,7 @@ def _compile(e: sp.Basic):
     source = _Source()
     out = source.emit(e)
     text = "\n".join(["def ball(env, an, work):", *source.lines, f"    return {out}", ""])
-    namespace = {"acb": flint.acb, "arb": flint.arb, "fmpq": flint.fmpq, **source.constants}
+    namespace = {"acb": flint.acb, "arb": flint.arb, **source.constants}
     exec(compile(text, "<quasicentral ball function>", "exec"), namespace)  # noqa: S102 - our own source
     return namespace["ball"]
 

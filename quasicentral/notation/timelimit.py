@@ -42,10 +42,11 @@ def time_limit(seconds: float):
             raise TimeLimitExceeded()
 
     old = signal.signal(signal.SIGVTALRM, handler)
-    signal.setitimer(signal.ITIMER_VIRTUAL, seconds, RETRY_SECONDS)
     try:
+        # armed inside the try: an interruption before the block starts still disarms the timer
+        signal.setitimer(signal.ITIMER_VIRTUAL, seconds, RETRY_SECONDS)
         yield
     finally:
-        active[0] = False
         signal.setitimer(signal.ITIMER_VIRTUAL, 0)
+        active[0] = False
         signal.signal(signal.SIGVTALRM, old)
