@@ -129,11 +129,10 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
 
 def coverage(entries: list[Entry], progress=None, use_cache: bool = True) -> dict:
     """Per entry, which backends read it correctly; and the totals.  Each entry's answer is
-    kept in the verdict cache under the code (sympy's, lark's and ANTLR's versions included) and
-    its text's files:
-    a parse costs up to seconds (lark's Earley parser), and the answer cannot change while
-    neither does.  ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told
-    of each entry; the totals' ``cached`` says how many were read back."""
+    kept in the verdict cache under the code (sympy's, lark's and ANTLR's versions included)
+    and its text's files: a parse costs up to seconds (lark's Earley parser), and the answer
+    cannot change while neither does.  ``progress`` (a :class:`quasicentral.progress.Progress`
+    callback) is told of each entry; the totals' ``cached`` says how many were read back."""
     from quasicentral.progress import notify
 
     keys = _cache_keys(entries)
