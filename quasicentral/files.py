@@ -142,3 +142,35 @@ def check_writable(directory: Path) -> None:
     fd, name = tempfile.mkstemp(prefix=".quasicentral-write-test.", suffix=".tmp", dir=directory)
     os.close(fd)
     os.unlink(name)
+
+
+def _private(st: os.stat_result) -> bool:
+    """Owned by this user and writable by nobody else."""
+    return st.st_uid == os.getuid() and not st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+
+
+def read_private(directory: Path, name: str) -> bytes | None:
+    """The bytes of ``directory/name`` where the folder and the file are this user's and nobody
+    else may write them, the file is a regular one and neither is a symbolic link; else None.
+    What a cache keeps (a pickle runs code when loaded, a figure goes into a report) is read only
+    so: a record another user could have planted is never used."""
+    try:
+        folder = os.open(directory, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW)
+    except OSError:
+        return None
+    try:
+        if not _private(os.fstat(folder)):
+            return None
+        fd = os.open(name, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK, dir_fd=folder)
+    except OSError:
+        return None
+    finally:
+        os.close(folder)
+    with os.fdopen(fd, "rb") as fh:
+        st = os.fstat(fh.fileno())
+        if not (stat.S_ISREG(st.st_mode) and _private(st)):
+            return None
+        try:
+            return fh.read()
+        except OSError:
+            return None

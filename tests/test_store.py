@@ -228,3 +228,54 @@ def _unpicklable(x: int):
 def test_a_result_that_cannot_be_sent_is_an_error_not_a_hang():
     with pytest.raises(Exception, match="pickle"):
         map_grouped(_unpicklable, [[1, 2], [3]], 2, lambda item, res: None)
+
+
+# --- drawn figures kept (quasicentral.studies.figures.draw) ----------------------------------------
+def _small_figure(scale: float = 1.0):
+    import numpy as np
+
+    from quasicentral.studies.figures import Figure, Kind
+
+    x = np.linspace(0.0, 1.0, 5)
+    return Figure("tiny", "a tiny figure", ("x", "y"), np.column_stack([x, scale * x**2]), Kind.CURVES,
+                  labels=("y",), xlabel="x", ylabel="y")
+
+
+def test_a_figure_is_drawn_once_per_data(tmp_path, monkeypatch):
+    from quasicentral.studies import figures
+
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
+    drawn = []
+    real_render = figures.render
+    monkeypatch.setattr(figures, "render", lambda fig, path: drawn.append(fig.name) or real_render(fig, path))
+    figures.draw(_small_figure(), tmp_path / "a.png")
+    figures.draw(_small_figure(), tmp_path / "b.png")
+    assert drawn == ["tiny"] and (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
+    figures.draw(_small_figure(scale=2.0), tmp_path / "c.png")  # other data: drawn
+    assert drawn == ["tiny", "tiny"] and (tmp_path / "c.png").read_bytes() != (tmp_path / "a.png").read_bytes()
+
+
+@pytest.mark.parametrize("spoil", ["group-writable file", "symlinked file", "foreign folder mode", "not a PNG"])
+def test_a_kept_figure_others_could_have_written_is_drawn_anew(tmp_path, monkeypatch, spoil):
+    from quasicentral.studies import figures
+
+    monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
+    figures.draw(_small_figure(), tmp_path / "a.png")
+    folder = tmp_path / "cache" / figures.FIGURE_CACHE
+    (kept,) = folder.glob("*.png")
+    if spoil == "group-writable file":
+        kept.chmod(0o664)
+    elif spoil == "symlinked file":
+        other = tmp_path / "elsewhere.png"
+        other.write_bytes(kept.read_bytes())
+        kept.unlink()
+        kept.symlink_to(other)
+    elif spoil == "foreign folder mode":
+        folder.chmod(0o777)
+    else:
+        kept.write_bytes(b"GIF89a not a png")
+    drawn = []
+    real_render = figures.render
+    monkeypatch.setattr(figures, "render", lambda fig, path: drawn.append(1) or real_render(fig, path))
+    figures.draw(_small_figure(), tmp_path / "b.png")
+    assert drawn == [1] and (tmp_path / "b.png").read_bytes() == (tmp_path / "a.png").read_bytes()

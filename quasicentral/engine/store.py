@@ -23,21 +23,15 @@ from __future__ import annotations
 import hashlib
 import os
 import pickle
-import stat
 from pathlib import Path
 
 import sympy as sp
 
 from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
-from quasicentral.files import ensure_dir, write_bytes
+from quasicentral.files import ensure_dir, read_private, write_bytes
 
 STORE_FOLDER = "derived"
 PICKLE_PROTOCOL = 5
-
-
-def _private(st: os.stat_result) -> bool:
-    """Owned by this user and writable by nobody else."""
-    return st.st_uid == os.getuid() and not st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
 
 
 def _basics(value) -> list[sp.Basic]:
@@ -86,25 +80,11 @@ class DerivedStore:
         texts it was built on; None when absent, unreadable, built on a text that has changed
         since, or in a file or folder another user could have written."""
         path = self._path(eid, module)
-        if path is None:
+        data = read_private(self.directory, path.name) if path is not None else None
+        if data is None:
             return None
         try:
-            folder = os.open(self.directory, os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW)
-        except OSError:
-            return None
-        try:
-            if not _private(os.fstat(folder)):
-                return None
-            fd = os.open(path.name, os.O_RDONLY | os.O_NOFOLLOW, dir_fd=folder)
-        except OSError:
-            return None
-        finally:
-            os.close(folder)
-        try:
-            with os.fdopen(fd, "rb") as fh:
-                if not _private(os.fstat(fh.fileno())):
-                    return None
-                value, used, others = pickle.load(fh)
+            value, used, others = pickle.loads(data)
             if any(self._fingerprint(tid) != fp for tid, fp in others.items()):
                 return None
             return value, frozenset(used), frozenset(others)
