@@ -148,21 +148,23 @@ def test_text_examples():
 # --- golden files -----------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def generated(outcomes, verdict_cache, tmp_path_factory):
-    """Every golden document generated in-process, written with its figures to a tmp dir —
-    while a second generation runs in a fresh process (see test_generation_is_byte_identical),
-    started first so that it overlaps with this one and with the compilation."""
-    second = tmp_path_factory.mktemp("second")
-    # the session's cache: verdicts and derivations read back (a derivation whose result
-    # depended on the hash seed would show against the golden files: each session draws its own)
-    env = {**os.environ, "PYTHONHASHSEED": "12345", "QUASICENTRAL_CACHE": str(verdict_cache)}
-    proc = subprocess.Popen([sys.executable, "-m", "quasicentral.cli", "report", "--all", "--out", str(second)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=second)
+    """Every golden document generated in-process, written with its figures to a tmp dir; then
+    a second generation in a fresh process (see test_generation_is_byte_identical), which
+    overlaps with the compilation.  It starts after this one has drawn the figures: it copies
+    those the session's cache keeps for the same data (keyed by the data, so a figure whose data
+    depended on the hash seed would be drawn anew, and differ)."""
     texts.activate(texts.shipped(), exclusive=True)  # the golden documents are the shipped texts'
     docs: dict[str, str] = {}
     for kinds, langs in report.GOLDEN:
         docs.update(report.generate(kinds, langs, outcomes))
     out = tmp_path_factory.mktemp("reports")
     report.write(out, docs)
+    second = tmp_path_factory.mktemp("second")
+    # the session's cache: verdicts, derivations and figures read back (a derivation whose result
+    # depended on the hash seed would show against the golden files: each session draws its own)
+    env = {**os.environ, "PYTHONHASHSEED": "12345", "QUASICENTRAL_CACHE": str(verdict_cache)}
+    proc = subprocess.Popen([sys.executable, "-m", "quasicentral.cli", "report", "--all", "--out", str(second)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=second)
     yield out, docs, (proc, second)
     if proc.poll() is None:
         proc.kill()
