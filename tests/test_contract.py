@@ -24,7 +24,10 @@ from quasicentral.cli import main
 from quasicentral.progress import Progress
 
 CHEAP = ["--id", "brepta1953:1", "--id", "brepta1953:4"]  # symbolic, about a second each
-SLOW = ["--id", "brepta1953:B-integral-t", "--id", "brepta1953:B-integral-z"]  # quadratures, tens of seconds
+# long enough for both workers to be seen alive (killed within seconds): the whole first text,
+# ~25 s on two workers — two quadrature entries alone now take under 5 s, and a worker with
+# nothing left to take could end before the test saw it
+SLOW = ["--source", "brepta1953"]
 
 
 @pytest.fixture
