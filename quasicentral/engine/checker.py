@@ -207,8 +207,10 @@ def _zero(e: sp.Expr, force: bool) -> bool:
 def _forced_zero(e: sp.Expr) -> bool:
     """√a·√b = √(ab) as if every radicand were positive — true inside the physical domains
     (|ζ| ≤ 1, k² < 1, …) though not for all complex values; the numeric cross-check that
-    follows every proof guards against a domain where it fails."""
-    return sp.simplify(sp.powsimp(sp.powdenest(e, force=True), force=True), doit=False) == 0
+    follows every proof guards against a domain where it fails.  Where forcing changes nothing,
+    simplify has already failed on this very expression (:func:`_zero`): not tried again."""
+    forced = sp.powsimp(sp.powdenest(e, force=True), force=True)
+    return forced != e and sp.simplify(forced, doit=False) == 0
 
 
 def _ftc_zero(diff: sp.Expr, force: bool = True) -> bool:
@@ -383,17 +385,21 @@ def integral_divergence(expr: sp.Expr, pt: dict) -> str:
         if len(integral.limits) != 1 or len(integral.limits[0]) != 3:
             continue
         x, a, b = integral.limits[0]
-        body = integral.function.xreplace(pt)
+        outer = tuple(sorted(integral.function.free_symbols - {x}, key=str))
+        if any(s not in pt for s in outer):
+            continue
         try:
             with mpmath.workdps(40):
                 ends = [bridge.mp_value(sp.sympify(e).xreplace(pt), 40) for e in (a, b)]
-                f = bridge.mp_function(body, (x,))
+                # compiled once for every point (mp_function remembers it), the point's values as arguments
+                f = bridge.mp_function(integral.function, (x,) + outer)
+                values = [bridge.mp_value(pt[s], 40) for s in outer]
                 for e, inward in ((ends[0], 1), (ends[1], -1)):
                     if mpmath.im(e) != 0:
                         continue
                     direction = inward if ends[1] >= ends[0] else -inward
-                    g1 = abs(f(e + direction * mpmath.mpf("1e-10")))
-                    g2 = abs(f(e + direction * mpmath.mpf("1e-20")))
+                    g1 = abs(f(e + direction * mpmath.mpf("1e-10"), *values))
+                    g2 = abs(f(e + direction * mpmath.mpf("1e-20"), *values))
                     if not (mpmath.isfinite(g1) and mpmath.isfinite(g2)) or g1 == 0 or g2 <= g1:
                         continue
                     q = mpmath.log(g2 / g1) / mpmath.log(mpmath.mpf(10) ** 10)

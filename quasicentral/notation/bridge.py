@@ -17,6 +17,8 @@ from functools import lru_cache
 
 import mpmath
 import sympy as sp
+from sympy.printing.pycode import MpmathPrinter
+from sympy.simplify.fu import TR9
 
 
 QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
@@ -94,10 +96,30 @@ MPMATH_NAMES = {
 }
 
 
+class _Printer(MpmathPrinter):
+    """sympy's mpmath printer, with the terms of a sum and the factors of a product in the
+    order of the expression's arguments (sympy's own order, the same in every process) instead
+    of sorted anew for display — a third of lambdify's time went into that sort; the value is
+    the same sum, rounded at the last working bit — and sinc as mpmath's ``sinc`` (1 at 0)
+    instead of sin(x)/x, which fails there."""
+
+    _default_settings = {**MpmathPrinter._default_settings, "order": "none"}
+
+    def _print_sinc(self, e):
+        return f"sinc({self._print(e.args[0])})"
+
+
 def mp_lambdify(args, expr, modules=None):
-    """``sympy.lambdify`` for mpmath (the table above, then mpmath), without the docstring:
-    printing the expression into it costs a fifth of lambdify's time, and nobody reads it."""
-    return sp.lambdify(args, expr, modules=modules or [MPMATH_NAMES, "mpmath"], docstring_limit=0)
+    """``sympy.lambdify`` for mpmath (the table above, then mpmath) through :class:`_Printer`,
+    without the docstring: printing the expression into it costs a fifth of lambdify's time,
+    and nobody reads it."""
+    modules = modules or [MPMATH_NAMES, "mpmath"]
+    # the settings lambdify gives its own printer: the names of the tables' functions kept as
+    # they are, looked up in the namespace at call time
+    names = {k: k for m in modules if isinstance(m, dict) for k in m}
+    printer = _Printer({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True,
+                        "user_functions": names})
+    return sp.lambdify(args, expr, modules=modules, printer=printer, docstring_limit=0)
 
 
 def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
@@ -223,9 +245,10 @@ def prepare(integral: sp.Integral) -> Prepared:
     factor u² leaves the root as u (u > 0, so √(u²·W) = u·√W on the principal branch: the
     value is unchanged) and cancels the Jacobian's u.  The distance to the end is then u²,
     computed without cancellation, so both flint's Gauss–Legendre and tanh–sinh keep every
-    working digit there.  A path singular at both ends is cut at its midpoint.  Where the
-    substitution does not leave an integrand sympy sees bounded (a log, a higher order, a
-    trigonometric radicand) the path stays as it is, marked singular."""
+    working digit there.  A radicand in sines and cosines, cos(φ₀ − c·u²) − cos φ₀, shows its
+    factor u² once written as products of sines (:func:`_small_sines`).  A path singular at
+    both ends is cut at its midpoint.  Where the substitution does not leave an integrand sympy
+    sees bounded (a log, a higher order) the path stays as it is, marked singular."""
     x, a, b = integral.limits[0]
     f = integral.function
     ends = [_singular(f.xreplace({x: e})) for e in (a, b)]
@@ -237,13 +260,18 @@ def prepare(integral: sp.Integral) -> Prepared:
         for lo, hi, at_lower in spans:
             # ∫_lo^hi f dx = ∫_0^1 f(x(u))·2(hi − lo)·u du, x = lo + (hi − lo)u² or hi − (hi − lo)u²
             xs = lo + (hi - lo) * u**2 if at_lower else hi - (hi - lo) * u**2
-            g = f.xreplace({x: xs}) * 2 * (hi - lo) * u
-            try:
-                g = g.replace(lambda e: isinstance(e, sp.Pow) and not e.exp.is_Integer and e.base.has(u),
-                              lambda e: sp.factor(e.base) ** e.exp)
-                bounded = not _singular(g.xreplace({u: 0}))
-            except (sp.PolynomialError, ValueError, TypeError, NotImplementedError):
-                bounded = False  # sympy cannot factor it: the path stays as it is
+            substituted = f.xreplace({x: xs}) * 2 * (hi - lo) * u
+            bounded = False
+            for radicand in (lambda r: r, lambda r: _small_sines(TR9(r), u)):
+                try:
+                    g = substituted.replace(
+                        lambda e: isinstance(e, sp.Pow) and not e.exp.is_Integer and e.base.has(u),
+                        lambda e: sp.factor(radicand(e.base)) ** e.exp)
+                    bounded = not _singular(g.xreplace({u: 0}))
+                except (sp.PolynomialError, ValueError, TypeError, NotImplementedError):
+                    bounded = False  # sympy cannot factor it: the path stays as it is
+                if bounded:
+                    break
             smoothed.append((sp.Integral(g, (u, 0, 1)), False))
             if not bounded:
                 break
@@ -264,6 +292,16 @@ def prepare(integral: sp.Integral) -> Prepared:
         lo, hi = (end if end.is_number else _param(end, table) for end in (lo, hi))
         lifted.append(sp.Integral(body, (var, lo, hi)))
     return Prepared(tuple((d, e) for e, d in table.items()), tuple(lifted), tuple(s for _, s in pieces))
+
+
+def _small_sines(e: sp.Expr, u: sp.Symbol) -> sp.Expr:
+    """A radicand that vanishes at u = 0 without u² as a factor, cos(φ₀ − c·u²) − cos φ₀: after
+    sympy's sum-to-product rules (``TR9``: −2·sin(φ₀ − c·u²/2)·sin(−c·u²/2)), each sine of an
+    argument w that vanishes at u = 0 is written w·sinc(w) (sinc 1 at 0).  Identities for all
+    complex values; the radicand's factor u² then shows, and its small factor is computed
+    without the cancellation of cos(φ₀ − c·u²) − cos φ₀."""
+    return e.replace(lambda s: isinstance(s, sp.sin) and s.args[0].has(u) and s.args[0].xreplace({u: 0}) == 0,
+                     lambda s: s.args[0] * sp.sinc(s.args[0]))
 
 
 def _param(e: sp.Expr, table: dict) -> sp.Dummy:
@@ -500,7 +538,7 @@ _UNARY = {  # sympy function -> the acb expression of its argument ``{a}`` (``an
     sp.acos: "{a}.acos()", sp.sinh: "{a}.sinh()", sp.cosh: "{a}.cosh()", sp.acot: "(1 / {a}).atan()",
     # |z| is analytic nowhere: an integrand with one gets no ball (mpmath integrates it)
     sp.Abs: "(acb('nan') if an else acb(abs({a})))",
-    sp.elliptic_k: "acb.elliptic_k({a})",
+    sp.elliptic_k: "acb.elliptic_k({a})", sp.sinc: "{a}.sinc()",
 }
 _BINARY = {sp.elliptic_f: "acb.elliptic_f({a}, {b})", sp.elliptic_e: "acb.elliptic_e_inc({a}, {b})"}
 _EXACT_INTEGER = 2**53  # integers below are exact balls at any working precision (≥ 53 bits) either way
