@@ -139,7 +139,7 @@ def linear_drag_separated():
 def angular_momentum_solution(rate: sp.Expr, var: sp.Symbol, const: sp.Symbol) -> sp.Expr:
     """Solve dL/dvar = rate·L with L(0) = const (dsolve), returning L(var)."""
     Lf = sp.Function("L")
-    sol = sp.dsolve(sp.Eq(Lf(var).diff(var), rate * Lf(var)), Lf(var), ics={Lf(0): const})
+    sol = sp.dsolve(sp.Eq(Lf(var).diff(var), rate * Lf(var)), Lf(var), ics={Lf(0): const}, hint="nth_linear_constant_coeff_homogeneous")
     return sol.rhs
 
 

@@ -208,7 +208,7 @@ def damped_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Exp
     sympy picks the real form; the result holds for κ = 0 too)."""
     kp = sp.Dummy("kappa", positive=True)
     eq = derived(eid).subs(Omega, sp.sqrt(kappa**2 + omega**2)).subs(kappa, kp)
-    sol = sp.dsolve(eq, coord, ics=ics).rhs.subs(kp, kappa)
+    sol = sp.dsolve(eq, coord, ics=ics, hint="nth_linear_constant_coeff_homogeneous").rhs.subs(kp, kappa)
     return sp.expand(sol)
 
 
@@ -393,7 +393,7 @@ def critical_double_root():
 def critical_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Expr:
     """dsolve of (16)/(17) at κ = Ω."""
     omega_c = sp.solve(sp.Eq(critical_kappa(), kappa), Omega)[0]
-    return sp.expand(sp.dsolve(derived(eid).subs(Omega, omega_c), coord, ics=ics).rhs)
+    return sp.expand(sp.dsolve(derived(eid).subs(Omega, omega_c), coord, ics=ics, hint="nth_linear_constant_coeff_homogeneous").rhs)
 
 
 @derives("brepta1953:critical-general-solution", unknowns=(x, y),

@@ -135,7 +135,7 @@ def undamped(c_sin, c_cos) -> sp.Expr:
     ff = sp.Function("f")
     w2 = derived("brepta1953:Omega-definition").rhs ** 2
     sol = sp.dsolve(ff(t).diff(t, 2) + w2 * ff(t), ff(t),
-                    ics={ff(0): c_cos, ff(t).diff(t).subs(t, 0): Omega * c_sin}).rhs
+                    ics={ff(0): c_cos, ff(t).diff(t).subs(t, 0): Omega * c_sin}, hint="nth_linear_constant_coeff_homogeneous").rhs
     return sp.simplify(sol.subs(g, Omega**2 * l))  # g/l = Ω²
 
 
