@@ -35,13 +35,13 @@ def acceleration() -> sp.Matrix:
 @derives("brepta1953:radial-acceleration", mode="expression")
 def radial_acceleration():
     """a_ρ = r̈ · e_ρ = ρ̈ − ρψ̇²."""
-    return sp.simplify(acceleration().dot(E_RHO))
+    return sp.trigsimp(sp.expand(acceleration().dot(E_RHO)))
 
 
 @derives("brepta1953:transverse-acceleration", mode="expression")
 def transverse_acceleration():
     """a_τ = r̈ · e_τ = ρψ̈ + 2ρ̇ψ̇."""
-    return sp.simplify(acceleration().dot(E_TAU))
+    return sp.trigsimp(sp.expand(acceleration().dot(E_TAU)))
 
 
 @derives("brepta1953:transverse-acceleration-compact", mode="expression",
@@ -64,19 +64,19 @@ def newton() -> sp.Matrix:
 @derives("brepta1953:1", unknowns=(D(rho, 2),))
 def radial_equation():
     """m(ρ̈ − ρψ̇²) = −S − R sin α: Newton's law along e_ρ."""
-    return sp.Eq(sp.simplify(newton().dot(E_RHO)), 0)
+    return sp.Eq(sp.trigsimp(sp.expand(newton().dot(E_RHO))), 0)
 
 
 @derives("brepta1953:2", unknowns=(D(psi, 2),))
 def transverse_equation():
     """(m/ρ) d/dt(ρ²ψ̇) = −R cos α: Newton's law along e_τ."""
-    return sp.Eq(sp.simplify(newton().dot(E_TAU)), 0)
+    return sp.Eq(sp.trigsimp(sp.expand(newton().dot(E_TAU))), 0)
 
 
 @derives("brepta1953:cos-alpha", unknowns=(sp.cos(alpha),), domain=SPEED_DOMAIN)
 def cos_alpha():
     """cos α = (ṙ · e_τ)/v = ρψ̇/v, the transverse share of the velocity."""
-    return sp.Eq(sp.cos(alpha), sp.simplify(position().diff(t).dot(E_TAU)) / v)
+    return sp.Eq(sp.cos(alpha), sp.trigsimp(sp.expand(position().diff(t).dot(E_TAU))) / v)
 
 
 def transverse_with_cos_alpha() -> sp.Eq:
@@ -120,7 +120,7 @@ def quadratic_drag_law():
 def law3_with(drag: sp.Eq) -> sp.Eq:
     """(3) with the drag law substituted: m d/dt ln L + R/v = 0."""
     eq = derived("brepta1953:3")
-    return sp.Eq(sp.simplify(eq.lhs.subs(R, drag.rhs)), 0)
+    return sp.Eq(sp.expand(eq.lhs.subs(R, drag.rhs)), 0)
 
 
 @derives("brepta1953:linear-drag-ode", uses=("brepta1953:3", "brepta1953:linear-drag-law"),
@@ -178,7 +178,7 @@ def quadratic_drag_separated():
 @derives("brepta1953:arc-length-rate", unknowns=(D(s),), domain=SPEED_DOMAIN)
 def arc_length_rate():
     """ds/dt = |ṙ| = v."""
-    return sp.Eq(D(s), sp.sqrt(sp.simplify(position().diff(t).dot(position().diff(t)))))
+    return sp.Eq(D(s), sp.sqrt(sp.trigsimp(sp.expand(position().diff(t).dot(position().diff(t))))))
 
 
 @derives("brepta1953:quadratic-drag-separated-ds", uses=("brepta1953:quadratic-drag-ode",),

@@ -35,7 +35,7 @@ def bob_position() -> sp.Matrix:
 def lagrangian() -> sp.Expr:
     """L = ½m|ṙ|² − m g z = ½ m l²(φ̇² + sin²φ ψ̇²) + m g l cos φ."""
     vel = bob_position().diff(t)
-    return sp.simplify(m * vel.dot(vel) / 2) - m * g * bob_position()[2]
+    return sp.trigsimp(sp.expand(m * vel.dot(vel) / 2)) - m * g * bob_position()[2]
 
 
 @shared
@@ -150,7 +150,7 @@ def thread_tension() -> sp.Expr:
     r = bob_position()
     e_r = r / l
     gravity = sp.Matrix([0, 0, -m * g])
-    return sp.simplify(gravity.dot(e_r) - m * r.diff(t, 2).dot(e_r))
+    return sp.trigsimp(sp.expand(gravity.dot(e_r) - m * r.diff(t, 2).dot(e_r)))
 
 
 @derives("brepta1953:11", unknowns=(S,))

@@ -114,7 +114,7 @@ def cartesian_moment() -> sp.Expr:
     """ρ²ψ̇ in Cartesian coordinates: x ẏ − y ẋ (checked by substituting x = ρ cos ψ, y = ρ sin ψ)."""
     L = x * D(y) - y * D(x)
     polar = {x: rho * sp.cos(psi), y: rho * sp.sin(psi)}
-    assert sp.simplify(L.subs(polar).doit() - rho**2 * D(psi).doit()) == 0
+    assert sp.trigsimp(sp.expand(L.subs(polar).doit() - rho**2 * D(psi).doit())) == 0
     return L
 
 
@@ -136,7 +136,7 @@ def undamped(c_sin, c_cos) -> sp.Expr:
     w2 = derived("brepta1953:Omega-definition").rhs ** 2
     sol = sp.dsolve(ff(t).diff(t, 2) + w2 * ff(t), ff(t),
                     ics={ff(0): c_cos, ff(t).diff(t).subs(t, 0): Omega * c_sin}, hint="nth_linear_constant_coeff_homogeneous").rhs
-    return sp.simplify(sol.subs(g, Omega**2 * l))  # g/l = Ω²
+    return sp.expand(sol.subs(g, Omega**2 * l))  # g/l = Ω²
 
 
 @derives("brepta1953:Omega-definition", unknowns=(Omega,))
@@ -835,7 +835,7 @@ def conical_condition():
 @shared
 def conical(expr: sp.Expr) -> sp.Expr:
     """expr at v₀ = R₀Ω (the radicand V² becomes R₀²Ω²)."""
-    return sp.simplify(expr.subs(v0, R0 * Omega))
+    return sp.trigsimp(sp.expand(expr.subs(v0, R0 * Omega)))
 
 
 @derives("brepta1953:conical-x", uses=("brepta1953:forced-x",),

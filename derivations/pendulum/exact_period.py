@@ -438,7 +438,7 @@ def period_integrand() -> sp.Expr:
     expr = expr.subs(KMOD, kp).subs(sp.cos(w), c)
     expr = expr.subs(sp.sin(w) ** 2, 1 - c**2)
     expr = sp.simplify(sp.powdenest(sp.factor(expr), force=True))
-    return sp.simplify(expr.subs(c, sp.sqrt(1 - sp.sin(w) ** 2)).subs(kp, KMOD))
+    return sp.expand(expr.subs(c, sp.sqrt(1 - sp.sin(w) ** 2)).subs(kp, KMOD))
 
 
 @shared

@@ -148,6 +148,7 @@ class _Span:
     def __init__(self, lo: sp.Expr, hi: sp.Expr):
         self.ends = (lo, hi)
         free = lo.free_symbols | hi.free_symbols
+        self.fixed = (lo, hi - lo) if not free else None  # (lo, width), the same for every point
         self.args = tuple(sorted(free, key=str))
         rational = all(e.is_rational_function(*free) and not e.atoms(sp.NumberSymbol) and not e.has(sp.I)
                        and all(n.is_Rational for n in e.atoms(sp.Number)) for e in self.ends)
@@ -178,7 +179,10 @@ class _Span:
                             return sp.Rational(f.numerator, f.denominator)
             except Exception:  # noqa: BLE001 - an end mpmath cannot compute (an undefined function): exact
                 pass
-        lo, hi = (e.xreplace(pt) if e.free_symbols else e for e in self.ends)
+        if self.fixed is not None:
+            lo, width = self.fixed
+            return lo + width * r
+        lo, hi = (e.xreplace(pt) for e in self.ends)
         return lo + (hi - lo) * r
 
 
