@@ -214,3 +214,37 @@ def test_chart_specs_are_typed_and_the_csv_header_unchanged():
     assert spec.header() == {"title": spec.title, "xlabel": spec.xlabel, "ylabel": spec.ylabel, "xscale": "log",
                              "invert_x": "yes"}
     assert C.CHARTS[0] == "workprecision-period" and C.CHARTS[-1] == "validity" and len(C.CHARTS) == 13
+
+
+@pytest.mark.parametrize("transparent", [False, True])
+def test_a_png_drops_its_alpha_channel_only_where_every_pixel_is_opaque(tmp_path, transparent):
+    """An opaque figure is written as RGB (pdfTeX copies such a PNG into a PDF as it is); one
+    with transparent pixels keeps them; either is byte-identical when written again."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from PIL import Image
+
+    from quasicentral.studies.png import save_png
+
+    written = []
+    for name in ("a.png", "b.png"):
+        fig, ax = plt.subplots(figsize=(2, 2), dpi=50)
+        ax.plot([0, 1], [1, 0])
+        if transparent:
+            fig.patch.set_alpha(0.0)
+        save_png(fig, tmp_path / name)
+        plt.close(fig)
+        written.append((tmp_path / name).read_bytes())
+    assert written[0] == written[1]
+    image = Image.open(tmp_path / "a.png")
+    assert image.mode == ("RGBA" if transparent else "RGB")
+    assert round(image.info["dpi"][0]) == 50
+    if not transparent:
+        reference = tmp_path / "reference.png"
+        fig, ax = plt.subplots(figsize=(2, 2), dpi=50)
+        ax.plot([0, 1], [1, 0])
+        fig.savefig(reference, format="png")
+        plt.close(fig)
+        assert np.array_equal(np.asarray(Image.open(reference).convert("RGB")), np.asarray(image))

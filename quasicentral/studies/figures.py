@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 
+from quasicentral.studies.png import save_png
+
 
 class Kind(str, Enum):
     TRAJECTORY = "trajectory"  # columns t, x, y: the path y(x), in mm
@@ -141,7 +143,8 @@ def _drawing_modules() -> tuple[str, ...]:
 
     # by module name: the package exports functions of the same names
     charts = ("render", "data", "maps")
-    return (__file__, *(importlib.import_module(f"quasicentral.studies.charts.{m}").__file__ for m in charts))
+    return (__file__, importlib.import_module("quasicentral.studies.png").__file__,
+            *(importlib.import_module(f"quasicentral.studies.charts.{m}").__file__ for m in charts))
 
 
 def render(fig: Figure, path: Path) -> None:
@@ -179,7 +182,7 @@ def render(fig: Figure, path: Path) -> None:
         ax.set_title(fig.title, fontsize=8)
         ax.grid(True, lw=0.3)
         figure.tight_layout()
-        figure.savefig(path, format="png", metadata={"Software": None})
+        save_png(figure, path)
         plt.close(figure)
 
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from quasicentral.studies.charts.data import ChartError, check, read_table
 from quasicentral.studies.charts.maps import beta_fit
+from quasicentral.studies.png import save_png
 
 YES = "yes"  # how a true flag is written in a CSV header (invert_x)
 
@@ -42,7 +43,7 @@ def render(csv_path: Path, png_path: Path) -> None:
                f"mpmath {header.get('mpmath', '?')}, python-flint {header.get('python-flint', '?')}, " \
                f"heyoka {header.get('heyoka', '?')}"
         fig.text(0.005, 0.003, foot, fontsize=5.5, color="0.35")
-        fig.savefig(png_path, format="png", metadata={"Software": None})
+        save_png(fig, png_path)
         plt.close(fig)
 
 

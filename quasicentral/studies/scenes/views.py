@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from quasicentral.studies.png import save_png
 from quasicentral.studies.scenes.ladder import RUNGS, Decision, Rating
 from quasicentral.studies.scenes.reading import NEEDS_DURATION, Scene, printable
 
@@ -158,7 +159,7 @@ def plot(decision: Decision, path) -> None:
         # the title is the user's text: shown as typed, never parsed as mathtext
         fig.suptitle(f"{s.title or Path(s.source).stem}: {s.quantity} → {c.label}", fontsize=9, parse_math=False)
         fig.tight_layout()
-        fig.savefig(path, format="png", metadata={"Software": None})
+        save_png(fig, path)
         plt.close(fig)
 
 
