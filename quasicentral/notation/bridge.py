@@ -475,11 +475,18 @@ class Work:
         return Work(evaluations, self, self.smooth_ends)
 
     def spend(self) -> bool:
-        """Count one evaluation; False once this budget or its parent's is spent."""
-        if self.spent or (self.parent is not None and not self.parent.spend()):
-            return False
-        if self.left is not None:
-            self.left -= 1
+        """Count one evaluation here and in every parent; False (counting nothing) once this
+        budget or a parent's is spent.  (Called for every integrand evaluation: one walk up the
+        chain, then one down.)"""
+        chain, node = [], self
+        while node is not None:
+            if node.left is not None:
+                if node.left <= 0:
+                    return False
+                chain.append(node)
+            node = node.parent
+        for node in chain:
+            node.left -= 1
         return True
 
     def remaining(self) -> int | None:
