@@ -262,7 +262,10 @@ def prepare(integral: sp.Integral) -> Prepared:
             xs = lo + (hi - lo) * u**2 if at_lower else hi - (hi - lo) * u**2
             substituted = f.xreplace({x: xs}) * 2 * (hi - lo) * u
             bounded = False
-            for radicand in (lambda r: r, lambda r: _small_sines(TR9(r), u)):
+            rewrites = [lambda r: r]
+            if substituted.has(sp.sin, sp.cos):  # the product form is tried only where it can differ
+                rewrites.append(lambda r: _small_sines(TR9(r), u))
+            for radicand in rewrites:
                 try:
                     g = substituted.replace(
                         lambda e: isinstance(e, sp.Pow) and not e.exp.is_Integer and e.base.has(u),
