@@ -356,6 +356,32 @@ def test_ball_work_is_counted_not_timed():
 
 
 # --- the cheaper means of proof and of evaluation --------------------------------------------------
+@pytest.fixture(autouse=True)
+def proofs_sought_anew(monkeypatch):
+    """Each test seeks its proofs itself (symbolic_zero remembers its answers per process)."""
+    from quasicentral.engine import checker
+
+    monkeypatch.setattr(checker, "_PROOFS", {})
+
+
+def test_a_proof_is_sought_once_per_expression(monkeypatch):
+    """The same difference (a repeated display, an erratum's shared claims) is proved once;
+    another one, or another bound, is sought anew."""
+    from quasicentral.engine import checker
+
+    calls = []
+    real = checker._zero
+    monkeypatch.setattr(checker, "_zero", lambda e, force: calls.append(e) or real(e, force))
+    a = sp.Symbol("a", real=True)
+    hard = sp.sin(a) ** 2 + sp.cos(a) ** 2 - 1 + sp.sqrt(a ** 2) - sp.Abs(a)
+    assert symbolic_zero(hard, 5) and symbolic_zero(hard, 5)
+    assert len(calls) == 1
+    assert not symbolic_zero(hard + a, 5) and not symbolic_zero(hard + a, 5)
+    assert len(calls) == 2
+    symbolic_zero(hard, 4)
+    assert len(calls) == 3
+
+
 def test_identities_in_sines_and_cosines_are_proved_in_their_exponential_form(monkeypatch):
     """Addition theorems and products of trigonometric functions of any argument (an undefined
     function's included) are proved without simplify; a near miss is not."""

@@ -171,7 +171,21 @@ def symbolic_zero(diff: sp.Expr, seconds: float, force: bool = True) -> bool:
     """True when sympy proves ``diff`` identically zero within ``seconds``.  With ``force``, a
     last attempt combines radicals as if their radicands were positive (see
     :func:`_forced_zero`): a proof on the physical domain, which the numeric stage then checks
-    at every point."""
+    at every point.  The answer is remembered for the same expression (a display the text
+    repeats, an erratum's claims that share their difference): each is sought once."""
+    key = (diff, seconds, force)
+    if key not in _PROOFS:
+        if len(_PROOFS) > PROOFS_REMEMBERED:
+            _PROOFS.clear()
+        _PROOFS[key] = _symbolic_zero(diff, seconds, force)
+    return _PROOFS[key]
+
+
+_PROOFS: dict = {}
+PROOFS_REMEMBERED = 10_000  # answers of symbolic_zero kept in one process
+
+
+def _symbolic_zero(diff: sp.Expr, seconds: float, force: bool) -> bool:
     try:
         with time_limit(seconds):
             if diff == 0:
