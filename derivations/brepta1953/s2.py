@@ -15,6 +15,10 @@ from quasicentral.engine.registry import derived, derives
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
+#: dsolve's method for a linear ODE with constant coefficients (named: sympy would otherwise
+#: classify the equation against every method first)
+LINEAR = "nth_linear_constant_coeff_homogeneous"
+
 S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
 A, B, R, S, alpha, beta, kappa, m, psi, rho, s, t, v = S_("A B R S alpha beta kappa m psi rho s t v")
 
@@ -139,7 +143,7 @@ def linear_drag_separated():
 def angular_momentum_solution(rate: sp.Expr, var: sp.Symbol, const: sp.Symbol) -> sp.Expr:
     """Solve dL/dvar = rate·L with L(0) = const (dsolve), returning L(var)."""
     Lf = sp.Function("L")
-    sol = sp.dsolve(sp.Eq(Lf(var).diff(var), rate * Lf(var)), Lf(var), ics={Lf(0): const}, hint="nth_linear_constant_coeff_homogeneous")
+    sol = sp.dsolve(sp.Eq(Lf(var).diff(var), rate * Lf(var)), Lf(var), ics={Lf(0): const}, hint=LINEAR)
     return sol.rhs
 
 

@@ -18,6 +18,10 @@ from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
+#: dsolve's method for a linear ODE with constant coefficients (named: sympy would otherwise
+#: classify the equation against every method first)
+LINEAR = "nth_linear_constant_coeff_homogeneous"
+
 S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
 (C, C1, C2, C3, C4, Omega, S, Tper, g, l, m, phi, psi, rho, t) = S_(
     "C C1 C2 C3 C4 Omega S T g l m phi psi rho t")
@@ -102,8 +106,8 @@ def small_angle_motion() -> dict:
     tests: it satisfies the reduced equations (8), (9) identically.)"""
     Xf, Yf = sp.Function("X"), sp.Function("Y")
     force_per_mass = -derived("brepta1953:12").rhs / (m * rho)  # S/(mρ) along −e_ρ: −(g/l)
-    solx = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), force_per_mass * Xf(t)), Xf(t), hint="nth_linear_constant_coeff_homogeneous").rhs
-    soly = sp.dsolve(sp.Eq(Yf(t).diff(t, 2), force_per_mass * Yf(t)), Yf(t), hint="nth_linear_constant_coeff_homogeneous").rhs
+    solx = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), force_per_mass * Xf(t)), Xf(t), hint=LINEAR).rhs
+    soly = sp.dsolve(sp.Eq(Yf(t).diff(t, 2), force_per_mass * Yf(t)), Yf(t), hint=LINEAR).rhs
     c1, c2 = sorted(solx.free_symbols - {t, g, l}, key=str)
     solx = solx.xreplace({c1: C1, c2: C2})
     soly = soly.xreplace({c1: C3, c2: C4})
@@ -183,8 +187,8 @@ def central_force():
 def oscillator_frequency() -> sp.Expr:
     """The angular frequency of ẍ = −(S/(mρ)) x from (12), read off dsolve's solution."""
     Xf = sp.Function("X")
-    sol = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), -derived("brepta1953:12").rhs / (m * rho) * Xf(t)), Xf(t),
-                    hint="nth_linear_constant_coeff_homogeneous").rhs
+    force_per_mass = -derived("brepta1953:12").rhs / (m * rho)
+    sol = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), force_per_mass * Xf(t)), Xf(t), hint=LINEAR).rhs
     freqs = {sp.simplify(a.args[0] / t) for a in sol.atoms(sp.sin, sp.cos)}
     (freq,) = freqs
     return freq
@@ -196,7 +200,7 @@ def oscillator_period() -> sp.Expr:
     freq = oscillator_frequency()
     period = 2 * sp.pi / freq
     Xf = sp.Function("X")
-    sol = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), -freq**2 * Xf(t)), Xf(t), hint="nth_linear_constant_coeff_homogeneous").rhs
+    sol = sp.dsolve(sp.Eq(Xf(t).diff(t, 2), -freq**2 * Xf(t)), Xf(t), hint=LINEAR).rhs
     assert sp.simplify(sp.expand_trig(sol.subs(t, t + period) - sol)) == 0
     return period
 

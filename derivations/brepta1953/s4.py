@@ -19,6 +19,10 @@ from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D, arccotg
 from quasicentral.engine.texts import symbols_of
 
+#: dsolve's method for a linear ODE with constant coefficients (named: sympy would otherwise
+#: classify the equation against every method first)
+LINEAR = "nth_linear_constant_coeff_homogeneous"
+
 S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
 (A, B, C, D_, K1, L1, M1, N1, Omega, R, R0, S, alpha, g, kappa, lam, m, n, omega, psi, rho, t, th, v, v0, vx, vy, x, y) = S_(
     "A B C D_ K1 L1 M1 N1 Omega R R0 S alpha g kappa lam m n omega psi rho t th v v0 vx vy x y")
@@ -208,7 +212,7 @@ def damped_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Exp
     sympy picks the real form; the result holds for κ = 0 too)."""
     kp = sp.Dummy("kappa", positive=True)
     eq = derived(eid).subs(Omega, sp.sqrt(kappa**2 + omega**2)).subs(kappa, kp)
-    sol = sp.dsolve(eq, coord, ics=ics, hint="nth_linear_constant_coeff_homogeneous").rhs.subs(kp, kappa)
+    sol = sp.dsolve(eq, coord, ics=ics, hint=LINEAR).rhs.subs(kp, kappa)
     return sp.expand(sol)
 
 
@@ -393,7 +397,7 @@ def critical_double_root():
 def critical_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Expr:
     """dsolve of (16)/(17) at κ = Ω."""
     omega_c = sp.solve(sp.Eq(critical_kappa(), kappa), Omega)[0]
-    return sp.expand(sp.dsolve(derived(eid).subs(Omega, omega_c), coord, ics=ics, hint="nth_linear_constant_coeff_homogeneous").rhs)
+    return sp.expand(sp.dsolve(derived(eid).subs(Omega, omega_c), coord, ics=ics, hint=LINEAR).rhs)
 
 
 @derives("brepta1953:critical-general-solution", unknowns=(x, y),

@@ -38,6 +38,10 @@ from quasicentral.engine.registry import derived, derives, shared
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
+#: dsolve's method for a linear ODE with constant coefficients (named: sympy would otherwise
+#: classify the equation against every method first)
+LINEAR = "nth_linear_constant_coeff_homogeneous"
+
 S_ = symbols_of(__file__)  # this text's declared symbols (text.toml)
 (A_sym, B_sym, C_sym, C1, C2, C3, C4, D1, D2, D_, Omega, R0, alpha, ax, ay, g, k, l, m, psi, rho, s, t, th, u, v,
  v0, x, y, z, zeta) = S_("A B C C1 C2 C3 C4 D1 D2 D_ Omega R0 alpha ax ay g k l m psi rho s t th u v v0 x y z zeta")
@@ -135,7 +139,7 @@ def undamped(c_sin, c_cos) -> sp.Expr:
     ff = sp.Function("f")
     w2 = derived("brepta1953:Omega-definition").rhs ** 2
     sol = sp.dsolve(ff(t).diff(t, 2) + w2 * ff(t), ff(t),
-                    ics={ff(0): c_cos, ff(t).diff(t).subs(t, 0): Omega * c_sin}, hint="nth_linear_constant_coeff_homogeneous").rhs
+                    ics={ff(0): c_cos, ff(t).diff(t).subs(t, 0): Omega * c_sin}, hint=LINEAR).rhs
     return sp.expand(sol.subs(g, Omega**2 * l))  # g/l = Ω²
 
 
