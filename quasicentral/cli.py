@@ -889,10 +889,12 @@ def _scene(args) -> int:
     except scenes.SceneError as exc:
         raise UsageError(str(exc)) from None
     if args.plot:
-        try:
-            scenes.plot(decision, Path(args.plot))
+        from quasicentral import files
+
+        try:  # through a temporary file and a rename, never through a symbolic link
+            files.write_atomic(Path(args.plot), lambda tmp: scenes.plot(decision, tmp))
         except OSError as exc:
-            raise UsageError(f"cannot write {args.plot}: {exc.strerror or exc}") from None
+            raise UsageError(f"--plot: cannot write {args.plot}: {exc.strerror or exc}") from None
     if args.json:
         print(json.dumps(scenes.document(decision), ensure_ascii=False))
     else:

@@ -456,3 +456,17 @@ def test_title_is_plain_text_in_the_plot_and_escaped_on_the_terminal(tmp_path, c
     assert "$\\foo{$" in capsys.readouterr().out
     err = scenes.SceneError("bad", "scene.title", 1, "a\x1b[31m.toml")
     assert "\x1b" not in str(err) and "\\x1b" in str(err)
+
+
+def test_plot_is_never_written_through_a_symbolic_link(tmp_path, capsys):
+    """--plot writes a temporary file and renames it into place: a link at the path is refused
+    (one line naming the option, exit 2) and its target is left as it was."""
+    target = tmp_path / "target.txt"
+    target.write_text("keep")
+    link = tmp_path / "p.png"
+    link.symlink_to(target)
+    assert main(["scene", str(SCENES / "large-amplitude-period.toml"), "--plot", str(link)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--plot" in err and "symbolic link" in err
+    assert target.read_text() == "keep" and link.is_symlink()
+    assert [p.name for p in tmp_path.iterdir() if p.name.endswith(".tmp")] == []
