@@ -969,7 +969,7 @@ def _charts(args) -> int:
             with ProgressBar(args, "charts") as bar:
                 paths = charts.build(out, quick=args.quick, only=args.only, progress=bar)
     except OSError as exc:
-        raise UsageError(f"cannot write charts to {args.out}: {exc.strerror or exc}") from None
+        raise UsageError(f"cannot write charts to {args.out} ({exc.filename or args.out}): {exc.strerror or exc}") from None
     except charts.ChartError as exc:
         raise UsageError(str(exc)) from None
     for p in paths:

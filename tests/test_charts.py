@@ -3,8 +3,10 @@
 contract: CSV with a machine header, PNG rendered from the CSV alone, byte-identical."""
 
 import math
+import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import mpmath
 import numpy as np
@@ -248,3 +250,24 @@ def test_a_png_drops_its_alpha_channel_only_where_every_pixel_is_opaque(tmp_path
         fig.savefig(reference, format="png")
         plt.close(fig)
         assert np.array_equal(np.asarray(Image.open(reference).convert("RGB")), np.asarray(image))
+
+
+def test_render_only_never_writes_through_a_symbolic_link(tmp_path, capsys):
+    """A PNG that is a link to another file is refused (one line naming it, exit 2), its target
+    left as it was; without the link the PNG is written through a temporary file."""
+    from quasicentral.cli import main
+
+    name = "stability-k2-to-0"
+    shutil.copy(Path(C.__file__).parent.parent.parent / "data" / "measurements" / f"{name}.csv", tmp_path)
+    target = tmp_path.parent / f"{tmp_path.name}-target.txt"
+    target.write_text("keep")
+    (tmp_path / f"{name}.png").symlink_to(target)
+    assert main(["charts", "--render-only", "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{name}.png" in err and "symbolic link" in err, err
+    assert target.read_text() == "keep"
+    (tmp_path / f"{name}.png").unlink()
+    assert main(["charts", "--render-only", "--out", str(tmp_path)]) == 0
+    png = tmp_path / f"{name}.png"
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and not png.is_symlink()
+    assert sorted(p.name for p in tmp_path.iterdir()) == [f"{name}.csv", f"{name}.png"]

@@ -42,6 +42,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
+from quasicentral import files
 from quasicentral.studies.charts import maps as _maps
 from quasicentral.studies.charts import workprecision as _wp
 from quasicentral.studies.charts.common import OMEGA
@@ -142,7 +143,7 @@ def build(out: Path, quick: bool = False, only: list[str] | None = None, progres
     for w in wanted:
         if w not in CHARTS:
             raise ChartError(f"unknown chart {w!r}; choose from {', '.join(CHARTS)}")
-    out.mkdir(parents=True, exist_ok=True)
+    files.output_dir(out)
     base = machine()
     base["mode"] = "quick" if quick else "full"
     written = []
@@ -150,9 +151,9 @@ def build(out: Path, quick: bool = False, only: list[str] | None = None, progres
     for name in wanted:
         measure, fields = _chart(name)
         rows = measure(settings)
-        csv_path, png_path = out / f"{name}.csv", out / f"{name}.png"
+        csv_path, png_path = files.inside(out, f"{name}.csv"), files.inside(out, f"{name}.png")
         write_csv(csv_path, rows, dict(base, chart=name, **fields))
-        render(csv_path, png_path)
+        files.write_atomic(png_path, lambda tmp, c=csv_path: render(c, tmp))
         written += [csv_path, png_path]
         notify(progress, len(written) // 2, len(wanted), name, 0, "charts")
     return written
@@ -168,7 +169,7 @@ def render_all(folder: Path) -> list[Path]:
         check(csv_path, read_table(csv_path))
     written = []
     for csv_path in paths:
-        png = csv_path.with_suffix(".png")
-        render(csv_path, png)
+        png = files.inside(folder, csv_path.with_suffix(".png").name)
+        files.write_atomic(png, lambda tmp, c=csv_path: render(c, tmp))  # never through a link
         written.append(png)
     return written

@@ -9,6 +9,8 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
+from quasicentral import files
+
 MAX_BYTES = 64 << 20  # a chart's CSV is at most 64 MiB
 
 
@@ -36,7 +38,7 @@ def write_csv(path: Path, rows: list[dict], header: dict) -> None:
     w.writerow(cols)
     for r in rows:
         w.writerow([_fmt(r.get(c, "")) for c in cols])
-    path.write_text(buf.getvalue(), encoding="utf-8")
+    files.write_text(path, buf.getvalue())  # a temporary file and a rename, never through a link
 
 
 @dataclass(frozen=True)
