@@ -358,10 +358,12 @@ def test_ball_work_is_counted_not_timed():
 # --- the cheaper means of proof and of evaluation --------------------------------------------------
 @pytest.fixture(autouse=True)
 def proofs_sought_anew(monkeypatch):
-    """Each test seeks its proofs itself (symbolic_zero remembers its answers per process)."""
+    """Each test seeks its proofs and computes its quadratures itself (symbolic_zero and the
+    quadratures remember their answers per process)."""
     from quasicentral.engine import checker
 
     monkeypatch.setattr(checker, "_PROOFS", {})
+    monkeypatch.setattr(bridge, "_QUADRATURES", {})
 
 
 def test_a_proof_is_sought_once_per_expression(monkeypatch):
@@ -379,6 +381,29 @@ def test_a_proof_is_sought_once_per_expression(monkeypatch):
     assert not symbolic_zero(hard + a, 5) and not symbolic_zero(hard + a, 5)
     assert len(calls) == 2
     symbolic_zero(hard, 4)
+    assert len(calls) == 3
+
+
+def test_a_quadrature_is_computed_once_per_integral_point_and_precision(monkeypatch):
+    """The printed and the derived side that hold the same integral (two compilations of it)
+    share its value at the same point and precision; another point, or another precision, is
+    integrated anew — and the remembered value is the one computed."""
+    calls = []
+    real = bridge._ball_quadrature
+    monkeypatch.setattr(bridge, "_ball_quadrature", lambda *a: calls.append(a[2]) or real(*a))
+    x, c = sp.symbols("x c", positive=True)
+    integral = sp.Integral(sp.sqrt(1 + c * sp.sin(x) ** 2), (x, 0, 1))
+    printed = bridge.mp_function(3 * integral, (c,))
+    derived = bridge.mp_function(integral + 1, (c,))
+    with mpmath.workdps(30):
+        p, d = printed(mpmath.mpf(2)), derived(mpmath.mpf(2))
+        assert len(calls) == 1 and abs(p - 3 * (d - 1)) <= abs(p) * mpmath.mpf(10) ** -29
+        truth = mpmath.quad(lambda z: mpmath.sqrt(1 + 2 * mpmath.sin(z) ** 2), [0, 1])
+        assert abs(d - 1 - truth) <= truth * mpmath.mpf(10) ** -29
+        derived(mpmath.mpf(3))
+        assert len(calls) == 2
+    with mpmath.workdps(60):
+        derived(mpmath.mpf(2))
     assert len(calls) == 3
 
 

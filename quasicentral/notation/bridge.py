@@ -371,14 +371,30 @@ def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singu
     if ball is None:
         mpmath_form()  # the only way: compiled now, as every other part of the expression
 
-    def value(*vals):
+    def compute(vals):
         if ball is not None:
             got = _ball_quadrature(ball, params, vals)
             if got is not None:
                 return got
         body, lower, upper = mpmath_form()
         return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)], singular=singular)
+
+    def value(*vals):
+        # remembered: a printed integral that is also the derived one (or an erratum's printed
+        # and corrected forms) meets the same piece at the same point and precision — about a
+        # quarter of a verification's quadratures.  The piece's parameters are its own dummies
+        # (prepare), so equal keys are the same integral at the same values
+        key = (integral, singular, vals, mpmath.mp.prec)
+        if key not in _QUADRATURES:
+            if len(_QUADRATURES) >= QUADRATURES_REMEMBERED:
+                _QUADRATURES.clear()
+            _QUADRATURES[key] = compute(vals)
+        return _QUADRATURES[key]
     return value
+
+
+_QUADRATURES: dict = {}
+QUADRATURES_REMEMBERED = 20_000  # values of _piece_quadrature kept in one process
 
 
 def _ball_quadrature(ball, outer, vals):

@@ -143,7 +143,9 @@ class _Span:
     computed at 40 and at 80 digits.  r is at least 2^-20 from 0 and 1, so the point stays
     strictly inside while the two computations of the ends agree to 10^-12 of the width (an end
     that cancels, 1 − cos x at tiny x, does not) and the width exceeds 10^-17 of the value;
-    otherwise, or where an end cannot be computed in mpmath, the point is exact."""
+    otherwise, or where an end cannot be computed in mpmath, the point is exact.  The earlier
+    points may themselves be irrational (φ0 = 1/100 + (π − 1/50)·r): their values are exact
+    numbers, computed at each precision."""
 
     def __init__(self, lo: sp.Expr, hi: sp.Expr):
         self.ends = (lo, hi)
@@ -166,7 +168,7 @@ class _Span:
         return (lo, hi) if ok else None
 
     def at(self, pt: dict, r: sp.Rational) -> sp.Expr:
-        if self.compiled is not None and all(pt[a].is_Rational for a in self.args):
+        if self.compiled is not None and all(pt[a].is_number for a in self.args):
             try:
                 coarse, fine = self._ends(pt, 40), self._ends(pt, 80)
                 if coarse is not None and fine is not None:
