@@ -222,9 +222,9 @@ def relabel(sol: sp.Expr, basis: tuple, names: tuple) -> sp.Expr:
     consts = sorted(sol.free_symbols - {t, kappa, omega}, key=str)
     mapping = {}
     for c in consts:
-        part = sp.simplify(sol.diff(c))  # the solution is linear in its constants
+        part = sol.diff(c)  # the solution is expanded and linear in its constants
         for b, name in zip(basis, names):
-            if sp.simplify(part - b) == 0:
+            if sp.expand(part - b) == 0:
                 mapping[c] = name
     assert len(mapping) == len(consts) == len(basis)
     return sol.xreplace(mapping)

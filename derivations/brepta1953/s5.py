@@ -134,13 +134,21 @@ def moment_law_quadratic():
 
 # --- the undamped motion ------------------------------------------------------------------------
 @shared
-def undamped(c_sin, c_cos) -> sp.Expr:
-    """dsolve f'' = −(g/l) f with f(0) = c_cos, f'(0) = Ω c_sin (Ω := √(g/l), Omega-definition)."""
+def undamped_initial_value() -> tuple[sp.Expr, sp.Symbol, sp.Symbol]:
+    """dsolve f'' = −(g/l) f with f(0) = b, f'(0) = Ω a (Ω := √(g/l), Omega-definition), for
+    placeholders a and b: solved once for every pair of initial data."""
     ff = sp.Function("f")
+    a, b = sp.Dummy("a"), sp.Dummy("b")
     w2 = derived("brepta1953:Omega-definition").rhs ** 2
     sol = sp.dsolve(ff(t).diff(t, 2) + w2 * ff(t), ff(t),
-                    ics={ff(0): c_cos, ff(t).diff(t).subs(t, 0): Omega * c_sin}, hint=LINEAR).rhs
-    return sp.expand(sol.subs(g, Omega**2 * l))  # g/l = Ω²
+                    ics={ff(0): b, ff(t).diff(t).subs(t, 0): Omega * a}, hint=LINEAR).rhs
+    return sol.subs(g, Omega**2 * l), a, b  # g/l = Ω²
+
+
+def undamped(c_sin, c_cos) -> sp.Expr:
+    """The undamped motion with f(0) = c_cos, f'(0) = Ω c_sin (:func:`undamped_initial_value`)."""
+    sol, a, b = undamped_initial_value()
+    return sp.expand(sol.xreplace({a: c_sin, b: c_cos}))
 
 
 @derives("brepta1953:Omega-definition", unknowns=(Omega,))
