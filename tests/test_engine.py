@@ -384,6 +384,22 @@ def test_a_proof_is_sought_once_per_expression(monkeypatch):
     assert len(calls) == 3
 
 
+def test_a_rational_identity_is_proved_from_its_numerator_alone(monkeypatch):
+    """Fractions over different denominators that sum to 0 are proved without cancel's gcd (and
+    without simplify); a near miss is not proved."""
+    from quasicentral.engine import checker
+
+    monkeypatch.setattr(sp, "cancel", lambda *a, **k: pytest.fail("cancel was called"))
+    a, b = sp.symbols("a b", positive=True)
+    x = sp.sqrt(a) + b
+    identity = 1 / (x * (x + 1)) - 1 / x + 1 / (x + 1)
+    assert sp.expand(identity) != 0  # expansion alone does not see it
+    assert checker._rational_zero(sp.expand(identity))
+    assert not checker._rational_zero(sp.expand(identity + 1 / (x + 2) ** 2))
+    monkeypatch.setattr(sp, "simplify", lambda *a, **k: pytest.fail("simplify was called"))
+    assert symbolic_zero(identity, 5)
+
+
 def test_a_quadrature_is_computed_once_per_integral_point_and_precision(monkeypatch):
     """The printed and the derived side that hold the same integral (two compilations of it)
     share its value at the same point and precision; another point, or another precision, is
