@@ -496,7 +496,14 @@ class Work:
     def spend(self) -> bool:
         """Count one evaluation here and in every parent; False (counting nothing) once this
         budget or a parent's is spent.  (Called for every integrand evaluation: one walk up the
-        chain, then one down.)"""
+        chain, then one down; a budget of its own, the numeric stage's, at once.)"""
+        if self.parent is None:
+            if self.left is None:
+                return True
+            if self.left <= 0:
+                return False
+            self.left -= 1
+            return True
         chain, node = [], self
         while node is not None:
             if node.left is not None:
