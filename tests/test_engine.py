@@ -384,6 +384,31 @@ def test_a_proof_is_sought_once_per_expression(monkeypatch):
     assert len(calls) == 3
 
 
+def test_sine_and_cosine_of_one_argument_come_from_one_sin_cos():
+    """A ball function computes sin and cos of the same argument once, together — the same ball
+    as the two computed apart — and an argument with an integral inside keeps its own calls
+    (each spends its share of the budget)."""
+    import flint
+
+    t, a = sp.symbols("t a", positive=True)
+    e = sp.sqrt(a + sp.cos(2 * t) ** 2) * sp.sin(2 * t) ** 2 + sp.cos(t)
+    source = bridge._Source(bridge._Source.pairs(e))
+    source.emit(e)
+    text = "\n".join(source.lines)
+    assert text.count(".sin_cos()") == 1 and ".sin()" not in text and text.count(".cos()") == 1
+    ball = bridge.arb_eval(e, {t: sp.Rational(1, 3), a: sp.Integer(2)}, 200)
+    old = flint.ctx.prec
+    flint.ctx.prec = 200
+    try:
+        x = flint.acb(flint.arb(1) / 3)
+        apart = (2 + (2 * x).cos() ** 2).sqrt() * (2 * x).sin() ** 2 + x.cos()
+    finally:
+        flint.ctx.prec = old
+    assert ball.mid() == apart.mid() and ball.rad() == apart.rad()
+    inner = sp.Integral(sp.exp(-a * t), (t, 0, 1))
+    assert bridge._Source.pairs(sp.sin(inner) + sp.cos(inner) + sp.sin(a) * sp.cos(a)) == {a}
+
+
 def test_a_rational_identity_is_proved_from_its_numerator_alone(monkeypatch):
     """Fractions over different denominators that sum to 0 are proved without cancel's gcd (and
     without simplify); a near miss is not proved."""
