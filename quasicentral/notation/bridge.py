@@ -495,24 +495,18 @@ class Work:
 
     def spend(self) -> bool:
         """Count one evaluation here and in every parent; False (counting nothing) once this
-        budget or a parent's is spent.  (Called for every integrand evaluation: one walk up the
-        chain, then one down; a budget of its own, the numeric stage's, at once.)"""
-        if self.parent is None:
-            if self.left is None:
-                return True
-            if self.left <= 0:
+        budget or a parent's is spent.  (Called for every integrand evaluation: two walks up the
+        chain, nothing allocated.)"""
+        node = self
+        while node is not None:
+            if node.left is not None and node.left <= 0:
                 return False
-            self.left -= 1
-            return True
-        chain, node = [], self
+            node = node.parent
+        node = self
         while node is not None:
             if node.left is not None:
-                if node.left <= 0:
-                    return False
-                chain.append(node)
+                node.left -= 1
             node = node.parent
-        for node in chain:
-            node.left -= 1
         return True
 
     def remaining(self) -> int | None:
