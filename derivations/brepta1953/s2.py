@@ -12,6 +12,7 @@ import sympy as sp
 
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import derived, derives
+from quasicentral.notation.identities import pythagorean
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
@@ -39,13 +40,13 @@ def acceleration() -> sp.Matrix:
 @derives("brepta1953:radial-acceleration", mode="expression")
 def radial_acceleration():
     """a_ρ = r̈ · e_ρ = ρ̈ − ρψ̇²."""
-    return sp.trigsimp(sp.expand(acceleration().dot(E_RHO)))
+    return pythagorean(acceleration().dot(E_RHO))
 
 
 @derives("brepta1953:transverse-acceleration", mode="expression")
 def transverse_acceleration():
     """a_τ = r̈ · e_τ = ρψ̈ + 2ρ̇ψ̇."""
-    return sp.trigsimp(sp.expand(acceleration().dot(E_TAU)))
+    return pythagorean(acceleration().dot(E_TAU))
 
 
 @derives("brepta1953:transverse-acceleration-compact", mode="expression",
@@ -68,19 +69,19 @@ def newton() -> sp.Matrix:
 @derives("brepta1953:1", unknowns=(D(rho, 2),))
 def radial_equation():
     """m(ρ̈ − ρψ̇²) = −S − R sin α: Newton's law along e_ρ."""
-    return sp.Eq(sp.trigsimp(sp.expand(newton().dot(E_RHO))), 0)
+    return sp.Eq(pythagorean(newton().dot(E_RHO)), 0)
 
 
 @derives("brepta1953:2", unknowns=(D(psi, 2),))
 def transverse_equation():
     """(m/ρ) d/dt(ρ²ψ̇) = −R cos α: Newton's law along e_τ."""
-    return sp.Eq(sp.trigsimp(sp.expand(newton().dot(E_TAU))), 0)
+    return sp.Eq(pythagorean(newton().dot(E_TAU)), 0)
 
 
 @derives("brepta1953:cos-alpha", unknowns=(sp.cos(alpha),), domain=SPEED_DOMAIN)
 def cos_alpha():
     """cos α = (ṙ · e_τ)/v = ρψ̇/v, the transverse share of the velocity."""
-    return sp.Eq(sp.cos(alpha), sp.trigsimp(sp.expand(position().diff(t).dot(E_TAU))) / v)
+    return sp.Eq(sp.cos(alpha), pythagorean(position().diff(t).dot(E_TAU)) / v)
 
 
 def transverse_with_cos_alpha() -> sp.Eq:
@@ -182,7 +183,7 @@ def quadratic_drag_separated():
 @derives("brepta1953:arc-length-rate", unknowns=(D(s),), domain=SPEED_DOMAIN)
 def arc_length_rate():
     """ds/dt = |ṙ| = v."""
-    return sp.Eq(D(s), sp.sqrt(sp.trigsimp(sp.expand(position().diff(t).dot(position().diff(t))))))
+    return sp.Eq(D(s), sp.sqrt(pythagorean(position().diff(t).dot(position().diff(t)))))
 
 
 @derives("brepta1953:quadratic-drag-separated-ds", uses=("brepta1953:quadratic-drag-ode",),

@@ -15,6 +15,7 @@ import sympy as sp
 from sympy.calculus.euler import euler_equations
 
 from quasicentral.engine.registry import derived, derives, shared
+from quasicentral.notation.identities import pythagorean
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
@@ -39,7 +40,7 @@ def bob_position() -> sp.Matrix:
 def lagrangian() -> sp.Expr:
     """L = ½m|ṙ|² − m g z = ½ m l²(φ̇² + sin²φ ψ̇²) + m g l cos φ."""
     vel = bob_position().diff(t)
-    return sp.trigsimp(sp.expand(m * vel.dot(vel) / 2)) - m * g * bob_position()[2]
+    return pythagorean(m * vel.dot(vel) / 2) - m * g * bob_position()[2]
 
 
 @shared
@@ -154,7 +155,7 @@ def thread_tension() -> sp.Expr:
     r = bob_position()
     e_r = r / l
     gravity = sp.Matrix([0, 0, -m * g])
-    return sp.trigsimp(sp.expand(gravity.dot(e_r) - m * r.diff(t, 2).dot(e_r)))
+    return pythagorean(gravity.dot(e_r) - m * r.diff(t, 2).dot(e_r))
 
 
 @derives("brepta1953:11", unknowns=(S,))

@@ -207,13 +207,37 @@ def omega_definition():
     return sp.Eq(omega, freq.subs(w, w_of))
 
 
-def damped_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Expr:
-    """dsolve of (16)/(17) for κ < Ω, written with Ω² = κ² + ω² (κ > 0 while solving, so that
-    sympy picks the real form; the result holds for κ = 0 too)."""
+#: placeholders for the initial data x(0), ẋ(0) while (16) is solved (see oscillator_dsolve)
+X_START, V_START = sp.Dummy("x_start"), sp.Dummy("v_start")
+
+
+@shared
+def oscillator_dsolve(critical: bool, with_start: bool) -> sp.Expr:
+    """dsolve of (16) in x: for κ < Ω written with Ω² = κ² + ω² (κ > 0 while solving, so that
+    sympy picks the real form; the result holds for κ = 0 too), or (``critical``) at κ = Ω.
+    The general solution, or (``with_start``) the one with x(0) = X_START, ẋ(0) = V_START:
+    placeholders, so that one dsolve serves every start."""
+    eq = derived("brepta1953:16")
+    ics = {x.subs(t, 0): X_START, x.diff(t).subs(t, 0): V_START} if with_start else None
+    if critical:
+        omega_c = sp.solve(sp.Eq(critical_kappa(), kappa), Omega)[0]
+        return sp.expand(sp.dsolve(eq.subs(Omega, omega_c), x, ics=ics, hint=LINEAR).rhs)
     kp = sp.Dummy("kappa", positive=True)
-    eq = derived(eid).subs(Omega, sp.sqrt(kappa**2 + omega**2)).subs(kappa, kp)
-    sol = sp.dsolve(eq, coord, ics=ics, hint=LINEAR).rhs.subs(kp, kappa)
-    return sp.expand(sol)
+    eq = eq.subs(Omega, sp.sqrt(kappa**2 + omega**2)).subs(kappa, kp)
+    return sp.expand(sp.dsolve(eq, x, ics=ics, hint=LINEAR).rhs.subs(kp, kappa))
+
+
+def oscillator_solution(coord: sp.Expr, eid: str, critical: bool, start: tuple | None = None) -> sp.Expr:
+    """(16) or (17) solved (:func:`oscillator_dsolve`): (17) is (16) with y for x (asserted),
+    so its solution is x's; ``start`` the initial data (coord(0), coord'(0)) put in."""
+    assert derived(eid) == derived("brepta1953:16").xreplace({x: coord}), eid
+    sol = oscillator_dsolve(critical, start is not None)
+    return sol if start is None else sp.expand(sol.xreplace({X_START: start[0], V_START: start[1]}))
+
+
+def damped_solution(coord: sp.Expr, eid: str, start: tuple | None = None) -> sp.Expr:
+    """dsolve of (16)/(17) for κ < Ω."""
+    return oscillator_solution(coord, eid, False, start)
 
 
 @shared
@@ -314,16 +338,17 @@ def constant_M():
     return sp.Eq(M1, sp.solve(derived("brepta1953:dy-dt").rhs.subs(t, 0) - vel[1], M1)[0])
 
 
-def initial_value_ics(coord: sp.Expr, index: int) -> dict:
+def start_of(index: int) -> tuple[sp.Expr, sp.Expr]:
+    """Fig. 6's initial position and velocity in coordinate ``index`` (0: x, 1: y)."""
     pos, vel = initial_state()
-    return {coord.subs(t, 0): pos[index], coord.diff(t).subs(t, 0): vel[index]}
+    return pos[index], vel[index]
 
 
 @derives("brepta1953:19", uses=("brepta1953:16", "brepta1953:17"), unknowns=(x, y), domain=SMALL_DAMPING)
 def particular_solution():
     """x = (R0/ω)e^{−κt}(κ sin ωt + ω cos ωt), y = (v0/ω)e^{−κt} sin ωt: dsolve with fig. 6's data."""
-    return [sp.Eq(x, damped_solution(x, "brepta1953:16", initial_value_ics(x, 0))),
-            sp.Eq(y, damped_solution(y, "brepta1953:17", initial_value_ics(y, 1)))]
+    return [sp.Eq(x, damped_solution(x, "brepta1953:16", start_of(0))),
+            sp.Eq(y, damped_solution(y, "brepta1953:17", start_of(1)))]
 
 
 def half_turns() -> sp.Expr:
@@ -394,10 +419,9 @@ def critical_double_root():
     return sp.Eq(lam, root)
 
 
-def critical_solution(coord: sp.Expr, eid: str, ics: dict | None = None) -> sp.Expr:
+def critical_solution(coord: sp.Expr, eid: str, start: tuple | None = None) -> sp.Expr:
     """dsolve of (16)/(17) at κ = Ω."""
-    omega_c = sp.solve(sp.Eq(critical_kappa(), kappa), Omega)[0]
-    return sp.expand(sp.dsolve(derived(eid).subs(Omega, omega_c), coord, ics=ics, hint=LINEAR).rhs)
+    return oscillator_solution(coord, eid, True, start)
 
 
 @derives("brepta1953:critical-general-solution", unknowns=(x, y),
@@ -443,8 +467,8 @@ def critical_constants_BD():
          unknowns=(x, y), domain=CRITICAL)
 def critical_particular_solution():
     """x = R0e^{−κt}(1 + κt), y = v0 t e^{−κt}: dsolve at κ = Ω with fig. 6's data."""
-    return [sp.Eq(x, critical_solution(x, "brepta1953:16", initial_value_ics(x, 0))),
-            sp.Eq(y, critical_solution(y, "brepta1953:17", initial_value_ics(y, 1)))]
+    return [sp.Eq(x, critical_solution(x, "brepta1953:16", start_of(0))),
+            sp.Eq(y, critical_solution(y, "brepta1953:17", start_of(1)))]
 
 
 @derives("brepta1953:22", mode="substitute", uses=("brepta1953:21",), domain=CRITICAL)

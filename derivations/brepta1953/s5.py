@@ -35,6 +35,7 @@ import sympy as sp
 
 from quasicentral.notation.domain import Domain
 from quasicentral.engine.registry import derived, derives, shared
+from quasicentral.notation.identities import pythagorean
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of
 
@@ -118,7 +119,7 @@ def cartesian_moment() -> sp.Expr:
     """ρ²ψ̇ in Cartesian coordinates: x ẏ − y ẋ (checked by substituting x = ρ cos ψ, y = ρ sin ψ)."""
     L = x * D(y) - y * D(x)
     polar = {x: rho * sp.cos(psi), y: rho * sp.sin(psi)}
-    assert sp.trigsimp(sp.expand(L.subs(polar).doit() - rho**2 * D(psi).doit())) == 0
+    assert pythagorean(L.subs(polar).doit() - rho**2 * D(psi).doit()) == 0
     return L
 
 
@@ -355,13 +356,15 @@ def speed_squared() -> sp.Expr:
 @shared
 def integrate_by_speed(rate: sp.Expr) -> sp.Expr:
     """∫ rate dt for rate = h(V²)·d(V²)/dt (the substitution W = V²); returns the antiderivative
-    H(V²) with no constant, verified by differentiation."""
+    H(V²) with no constant, verified by differentiation.  The quotient and the check are
+    rational in sin Ωt, cos Ωt once the double angles are expanded: cancelled first, so that
+    simplify only tidies a small rational function of the constants."""
     W = sp.Symbol("W", positive=True)
     V2 = speed_squared()
-    h = sp.simplify(rate.subs(sp.sqrt(V2), sp.sqrt(W)) / V2.diff(t))
+    h = sp.simplify(sp.cancel(sp.expand_trig(rate.subs(sp.sqrt(V2), sp.sqrt(W)) / V2.diff(t))))
     assert t not in h.free_symbols, h
     H = sp.integrate(h, W).subs(W, V2)
-    assert sp.simplify(H.diff(t) - rate) == 0
+    assert sp.cancel(sp.expand_trig(H.diff(t) - rate)) == 0
     return H
 
 
@@ -847,7 +850,7 @@ def conical_condition():
 @shared
 def conical(expr: sp.Expr) -> sp.Expr:
     """expr at v₀ = R₀Ω (the radicand V² becomes R₀²Ω²)."""
-    return sp.trigsimp(sp.expand(expr.subs(v0, R0 * Omega)))
+    return pythagorean(expr.subs(v0, R0 * Omega))
 
 
 @derives("brepta1953:conical-x", uses=("brepta1953:forced-x",),

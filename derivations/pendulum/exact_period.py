@@ -134,7 +134,9 @@ def angular_speed(angle: sp.Expr) -> sp.Expr:
     """φ̇ as a function of the angle on the rising quarter (0 → φ0, φ̇ ≥ 0): the root of
     h(φ, φ̇) = h(φ0, 0) that is positive inside the swing."""
     h = energy_function()
-    roots = sp.solve(sp.Eq(h, initial_value(h)), D(phi))
+    # the two roots of a quadratic in φ̇ as they come: sympy's clean-up of each (simplify) costs
+    # ten times the solve and leaves them as they are
+    roots = sp.solve(sp.Eq(h, initial_value(h)), D(phi), simplify=False)
     probe = {phi: sp.Rational(1, 2), phi0: 1, g: 1, l: 1, m: 1}
     (pos,) = [r for r in roots if sp.N(r.subs(probe)) > 0]
     return pos.subs(phi, angle)
@@ -368,7 +370,7 @@ def angle_of_w() -> sp.Expr:
     """φ(ψ) solved from (57) on the branch with φ(0) = 0: 2 asin(sin(φ0/2) sin ψ); it maps
     ψ ∈ [0, π/2] increasingly onto [0, φ0]."""
     (rel,) = derived_substitution()
-    sols = sp.solve(rel, vphi)
+    sols = sp.solve(rel, vphi, simplify=False)  # the inverse sine's two branches, as they come
     (branch,) = [s_ for s_ in sols if sp.simplify(s_.subs(w, 0)) == 0]
     return branch
 
