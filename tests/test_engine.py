@@ -425,6 +425,74 @@ def test_a_rational_identity_is_proved_from_its_numerator_alone(monkeypatch):
     assert symbolic_zero(identity, 5)
 
 
+def test_simplify_is_not_tried_where_a_few_numbers_show_the_difference_is_not_zero(monkeypatch):
+    """A difference seen clearly non-zero at a point its symbols' assumptions allow is not given
+    to simplify (which could only fail); an identity under the assumptions, a function met at
+    two arguments, an integral or a value that cannot be computed leave the decision to
+    simplify.  A function sympy cannot see into (undefined, or computed by ``_imp_`` only)
+    counts as a bare value: its numbers are not what simplify knows."""
+    from quasicentral.engine import checker
+
+    x, p = sp.Symbol("x", real=True), sp.Symbol("p", positive=True)
+    n = sp.Symbol("n", integer=True, positive=True)
+    f = sp.Function("f")
+
+    class known_one(sp.Function):  # noqa: N801 - numbers only: 1 everywhere, simplify cannot know
+        nargs = 1
+        _imp_ = staticmethod(lambda v: 1)
+
+    class with_rule(sp.Function):  # noqa: N801 - an evaluation rule of its own: not a bare value
+        nargs = 1
+
+        @classmethod
+        def eval(cls, v):
+            return None
+
+    seen = checker._seen_nonzero
+    assert seen(sp.sqrt(x**2) - x)  # x < 0 is allowed
+    assert not seen(sp.sqrt(p**2) - p)  # an identity for p > 0
+    assert not seen(sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1)
+    assert not seen((-1) ** (2 * n) - 1)
+    assert seen(sp.sin(p / 2) - sp.Abs(sp.sin(p / 2)))  # the reach shows a sign change at p = 2π
+    assert seen(f(t) ** 2 - 1) and not seen(sp.cos(f(t)) ** 2 + sp.sin(f(t)) ** 2 - 1)
+    assert seen(sp.Derivative(f(t), t) - f(t))
+    assert seen(known_one(x) - 1)  # equal in numbers, not for simplify
+    assert not seen(with_rule(x) - 1)  # cannot be computed: simplify decides
+    assert not seen(f(t) - f(2 * t))  # two arguments of f: simplify might show them equal
+    assert not seen(sp.Integral(x, (x, 0, 1)) - 1)
+    assert checker._seen_nonzero(x - 1) == seen(x - 1)  # seeded by the expression: the same answer
+
+    calls = []
+    real_simplify = sp.simplify
+    monkeypatch.setattr(sp, "simplify", lambda *a, **k: calls.append(a[0]) or real_simplify(*a, **k))
+    assert not symbolic_zero(sp.sqrt(x**2) - x, 5, force=False) and calls == []
+    assert symbolic_zero(sp.sqrt(p**2) * sp.cos(x) ** 2 - p + p * sp.sin(x) ** 2, 5)
+    # forced (radicands taken positive): proved where simplify of the difference itself cannot be
+    z, k = sp.Symbol("z", real=True), sp.Symbol("k", positive=True)
+    assert symbolic_zero(1 / (sp.sqrt(1 - z**2) * sp.sqrt(1 - k**2 * z**2)) - 1 / sp.sqrt((1 - z**2) * (1 - k**2 * z**2)), 5)
+
+
+def test_the_pythagorean_identity_alone_gives_what_trigsimp_gives_on_rotating_vectors():
+    """sin²a + cos²a = 1 in the direction that leaves the shorter expression, common factors
+    taken out: on the dot products of rotating unit vectors the very result of trigsimp; a
+    double angle is left alone; the value is the input's."""
+    from quasicentral.notation.identities import pythagorean
+
+    a, b, m, l = sp.symbols("a b m l", positive=True)
+    phi, psi = sp.Function("phi")(t), sp.Function("psi")(t)
+    r = l * sp.Matrix([sp.sin(phi) * sp.cos(psi), sp.sin(phi) * sp.sin(psi), -sp.cos(phi)])
+    v = r.diff(t)
+    for e in (sp.expand(m * v.dot(v) / 2), sp.expand(r.diff(t, 2).dot(r / l)),
+              sp.expand(l**2 * (sp.sin(a) ** 2 * sp.cos(b) ** 2 + sp.sin(a) ** 2 * sp.sin(b) ** 2 + sp.cos(a) ** 2))):
+        assert sp.srepr(pythagorean(e)) == sp.srepr(sp.trigsimp(e))
+    assert pythagorean(sp.sin(a) ** 4 - 2 * sp.sin(a) ** 2 + 1) == sp.cos(a) ** 4  # the shorter direction
+    assert pythagorean(sp.sin(2 * a) + sp.cos(a) ** 2 + sp.sin(a) ** 2) == sp.sin(2 * a) + 1
+    e = sp.cos(a) ** 4 * b + 2 * sp.sin(a) ** 2 * sp.cos(a) ** 2 * b + sp.sin(a) ** 4 * b
+    assert pythagorean(e) == b
+    point = {a: sp.Rational(7, 3), b: sp.Rational(-2, 5), m: 3, l: 2}
+    assert abs(sp.N((pythagorean(sp.sin(a) ** 3 * m + b) - sp.sin(a) ** 3 * m - b).subs(point), 30)) < 1e-28
+
+
 def test_a_quadrature_is_computed_once_per_integral_point_and_precision(monkeypatch):
     """The printed and the derived side that hold the same integral (two compilations of it)
     share its value at the same point and precision; another point, or another precision, is

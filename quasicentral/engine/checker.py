@@ -10,7 +10,8 @@ A *claim* is a pair of expressions that should be equal on the declared domain. 
    from rung to rung;
 3. symbolic, unless the numbers already refute (then no simplification can return 0):
    p − d proved 0 within a CPU-time bound, cheapest means first (expansion and cancellation;
-   the exponential form of sines and cosines; ``simplify``; radicals combined as if positive);
+   the exponential form of sines and cosines; ``simplify``, unless p − d is seen non-zero at a
+   point its symbols' assumptions allow; radicals combined as if positive);
    for an integral with a variable upper limit X, the fundamental theorem: d/dX (p − d) = 0
    and (p − d) = 0 at the lower limit.
    A proof makes the verdict "verified, symbolic"; a proof the numbers contradict is not
@@ -25,6 +26,7 @@ import math
 from fractions import Fraction
 from dataclasses import dataclass, replace
 from functools import lru_cache
+from random import Random
 
 import mpmath
 import sympy as sp
@@ -208,7 +210,8 @@ def _zero(e: sp.Expr, force: bool) -> bool:
     catalog's identities at a fifth of simplify's cost.  Of the rest, those in sines and cosines
     fall to their exponential form (sin x = (e^(ix) − e^(−ix))/2i, every step an identity for
     all complex values) expanded and cancelled, at a tenth of simplify's cost, which spends half
-    its time in trigsimp; simplify (trigonometric, radicals) takes what is left."""
+    its time in trigsimp; simplify (trigonometric, radicals) takes what is left — unless a few
+    numbers show that it cannot succeed (:func:`_seen_nonzero`)."""
     expanded = sp.expand(e)
     if expanded == 0 or _rational_zero(expanded):
         return True
@@ -216,7 +219,107 @@ def _zero(e: sp.Expr, force: bool) -> bool:
         exponential = sp.expand(sp.powsimp(sp.expand(e.rewrite(sp.exp))))
         if exponential == 0 or _rational_zero(exponential):
             return True
-    return sp.simplify(e, doit=False) == 0 or (force and _forced_zero(e))
+    if not _seen_nonzero(e) and sp.simplify(e, doit=False) == 0:
+        return True
+    return force and _forced_zero(e)
+
+
+#: points at which :func:`_seen_nonzero` evaluates an expression, and the digits it uses
+NONZERO_POINTS = 3
+NONZERO_DPS = 30
+#: |e| above this fraction of the sum of its terms' magnitudes is not a rounding error at
+#: NONZERO_DPS digits (a true identity leaves about 10^-29 of it)
+NONZERO_MARGIN = sp.Float("1e-15")
+#: the reach of a sampled value: |x| < NONZERO_REACH (wide, so that a sign or a branch that an
+#: identity depends on shows: sin(φ0/2) changes sign at φ0 = 2π)
+NONZERO_REACH = 16
+#: facts a sampled value is not made to obey: an expression whose symbols carry one is not sampled
+_UNSAMPLED_FACTS = ("even", "odd", "prime", "composite", "zero", "imaginary", "noninteger", "irrational",
+                    "transcendental", "polar", "infinite")
+#: what would let sympy see into a function defined outside sympy
+_SEEING_HOOKS = ("eval", "_eval_")
+
+
+def _seen_nonzero(e: sp.Expr) -> bool:
+    """True when ``e`` is clearly not 0 at one of a few points that sympy's assumptions allow:
+    then no sound simplification returns 0, and simplify (the costliest means, most of the
+    time of a proof that fails) is not tried.  Each free symbol takes a value from the set its
+    assumptions name (positive, real, integer, …; complex where none is said); so does each
+    application of a function sympy cannot see into (an undefined x(t), its derivatives, a
+    function class without evaluation rules of its own, such as one computed by ``_imp_``):
+    for simplify it is a bare value.  Seeded by the expression, the points are the same in
+    every run.  Where anything is in doubt (an integral or a sum, a value that cannot be
+    computed, a function met at two different arguments) the answer is False: simplify
+    decides as before.  A proof this test prevents is one that sympy could only have given
+    in error."""
+    if not _samplable(e):
+        return False
+    opaque: dict = {}
+    for f in sorted(e.atoms(sp.Derivative, sp.Function), key=sp.default_sort_key):
+        if isinstance(f, sp.Derivative) or _opaque(f):
+            opaque[f] = sp.Dummy(**{fact: True for fact in ("integer", "positive", "nonnegative", "negative",
+                                                            "nonpositive", "real")
+                                    if getattr(f, "is_" + fact)})
+    heads = [f.func if not isinstance(f, sp.Derivative) else (f.expr.func, f.variable_count) for f in opaque]
+    if len(heads) != len(set(heads)):
+        return False  # f(a) and f(b): simplify might show a = b, independent values would not
+    # derivatives first (they contain the function), then the functions
+    sampled = e.xreplace({f: d for f, d in opaque.items() if isinstance(f, sp.Derivative)})
+    sampled = sampled.xreplace({f: d for f, d in opaque.items() if not isinstance(f, sp.Derivative)})
+    symbols = sorted(sampled.free_symbols, key=sp.default_sort_key)
+    if any(getattr(s, "is_" + fact) for s in symbols for fact in _UNSAMPLED_FACTS):
+        return False
+    terms = sampled.args if isinstance(sampled, sp.Add) else (sampled,)
+    rng = Random(seed_for(sp.srepr(e)))
+    for _ in range(NONZERO_POINTS):
+        point = {s: _assumed_value(s, rng) for s in symbols}
+        try:
+            values = [t.evalf(NONZERO_DPS, subs=point) for t in terms]
+        except (TypeError, ValueError, ZeroDivisionError, ArithmeticError):
+            continue
+        if not all(v.is_number and v.is_finite for v in values):
+            continue
+        total = sp.Add(*values)
+        if total.is_finite and abs(total) > NONZERO_MARGIN * sum(abs(v) for v in values):
+            return True
+    return False
+
+
+def _samplable(e: sp.Expr) -> bool:
+    """No integral, sum, product or limit; each derivative one of an undefined function's."""
+    return (not e.has(sp.Integral, sp.Sum, sp.Product, sp.Limit)
+            and all(isinstance(d.expr, sp.core.function.AppliedUndef) for d in e.atoms(sp.Derivative)))
+
+
+def _opaque(f: sp.Basic) -> bool:
+    """An application sympy's simplification sees only as a value: an undefined function, or a
+    class defined outside sympy with no evaluation rule or rewrite of its own (``eval``,
+    ``_eval_*``)."""
+    if isinstance(f, sp.core.function.AppliedUndef):
+        return True
+    own = [c for c in type(f).__mro__ if not (c.__module__ or "").startswith("sympy") and c is not object]
+    return bool(own) and not any(name.startswith(_SEEING_HOOKS) for c in own for name in vars(c))
+
+
+def _assumed_value(s: sp.Symbol, rng: Random) -> sp.Expr:
+    """A value in the set ``s``'s assumptions name: an integer 1…9 (or −9…9 without 0), a
+    rational in (0, NONZERO_REACH) or (−NONZERO_REACH, NONZERO_REACH), or a complex one."""
+    def rational() -> sp.Rational:
+        return sp.Rational(rng.randrange(1, NONZERO_REACH * 2**16), 2**16)
+
+    if s.is_integer:
+        if s.is_positive or s.is_nonnegative:
+            return sp.Integer(rng.randint(1, 9))
+        if s.is_negative or s.is_nonpositive:
+            return sp.Integer(-rng.randint(1, 9))
+        return sp.Integer(rng.choice([-1, 1]) * rng.randint(1, 9))
+    if s.is_positive or s.is_nonnegative:
+        return rational()
+    if s.is_negative or s.is_nonpositive:
+        return -rational()
+    if s.is_real:
+        return rng.choice([-1, 1]) * rational()
+    return rng.choice([-1, 1]) * rational() + sp.I * rng.choice([-1, 1]) * rational()
 
 
 def _rational_zero(e: sp.Expr) -> bool:
@@ -233,7 +336,7 @@ def _forced_zero(e: sp.Expr) -> bool:
     follows every proof guards against a domain where it fails.  Where forcing changes nothing,
     simplify has already failed on this very expression (:func:`_zero`): not tried again."""
     forced = sp.powsimp(sp.powdenest(e, force=True), force=True)
-    return forced != e and sp.simplify(forced, doit=False) == 0
+    return forced != e and (forced == 0 or not _seen_nonzero(forced) and sp.simplify(forced, doit=False) == 0)
 
 
 def _ftc_zero(diff: sp.Expr, force: bool = True) -> bool:
