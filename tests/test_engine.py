@@ -516,6 +516,35 @@ def test_a_quadrature_is_computed_once_per_integral_point_and_precision(monkeypa
     assert len(calls) == 3
 
 
+def test_a_periodic_integrand_over_many_periods_is_integrated_over_one_and_the_rest(monkeypatch):
+    """The period is found where the variable enters only through sines and cosines of one
+    rate (π/c where half a turn leaves the integrand as it is); a path of many periods is then
+    one period times their number plus the rest — the same value as mpmath's over the whole
+    path, in either direction, at a fraction of the evaluations."""
+    x = sp.Symbol("x", real=True)
+    a, b, w, T = sp.symbols("a b w T", positive=True)
+    body = sp.sqrt(a + b * sp.cos(w * x) ** 2) * sp.sin(w * x) ** 2
+    assert bridge.period(body, x) == sp.pi / w
+    assert bridge.period(sp.exp(sp.sin(w * x + 1)), x) == 2 * sp.pi / w
+    assert bridge.period(sp.sin(x) + x, x) is None and bridge.period(sp.sin(x) * sp.cos(2 * x), x) is None
+    assert bridge.period(sp.sqrt(a + x), x) is None
+    values = {T: sp.Integer(25), a: sp.Integer(2), b: sp.Rational(-19, 10), w: sp.Integer(1)}  # eight periods
+    f = sp.lambdify(x, body.subs(values), "mpmath")
+    with mpmath.workdps(40):
+        truth = mpmath.quad(f, mpmath.linspace(0, 25, 40))
+        for lo, hi, sign in ((0, T, 1), (T, 0, -1)):
+            got = bridge.mp_eval(sp.Integral(body, (x, lo, hi)), values, 30)
+            assert abs(got - sign * truth) <= abs(truth) * mpmath.mpf(10) ** -28
+    spent = []
+    for fold_from in (bridge.PERIODS_WORTH_FOLDING, 10**9):  # folded, then straight along the path
+        monkeypatch.setattr(bridge, "PERIODS_WORTH_FOLDING", fold_from)
+        work = bridge.Work(10**6)
+        ball = bridge.arb_eval(sp.Integral(body, (x, 0, T)), values, 120, work)
+        assert ball.is_finite() and abs(float(ball.real.mid()) - float(truth)) < 1e-12 and ball.rad() < 1e-30
+        spent.append(10**6 - work.left)
+    assert spent[0] < spent[1] / 2
+
+
 def test_identities_in_sines_and_cosines_are_proved_in_their_exponential_form(monkeypatch):
     """Addition theorems and products of trigonometric functions of any argument (an undefined
     function's included) are proved without simplify; a near miss is not."""

@@ -690,11 +690,58 @@ def _compile_integral(e: sp.Integral):
     return total
 
 
+def period(body: sp.Expr, var: sp.Symbol) -> sp.Expr | None:
+    """A period P of ``body`` in ``var``, body(var + P) ≡ body(var) for every complex var, where
+    var enters only through sines, cosines and tangents of c·var + d with one rate c for all:
+    π/c if the shift by it leaves ``body`` unchanged (sympy's own rules, sin(x + π) = −sin x,
+    then expansion), else 2π/c if that does; None otherwise (also where a period exists but
+    is not found this way)."""
+    trig = [f for f in body.atoms(sp.sin, sp.cos, sp.tan) if f.has(var)]
+    if not trig or body.xreplace({f: sp.Dummy() for f in trig}).has(var):
+        return None
+    rates = set()
+    for f in trig:
+        arg = sp.expand(f.args[0])
+        c = arg.coeff(var)
+        if c == 0 or c.has(var) or (arg - c * var).has(var):
+            return None
+        rates.add(c)
+    if len(rates) != 1:
+        return None
+    (c,) = rates
+    for candidate in (sp.pi / c, 2 * sp.pi / c):
+        shifted = body.xreplace({f: f.func(sp.expand(f.args[0].xreplace({var: var + candidate}))) for f in trig})
+        if sp.expand(shifted - body) == 0:
+            return candidate
+    return None
+
+
+#: a path of at least this many periods is integrated over one period and what is left over
+PERIODS_WORTH_FOLDING = 2
+
+
+def _whole_periods(length, span) -> int:
+    """The whole periods in a path of ``length`` (balls), towards 0 and signed; 0 unless both
+    are real and the period positive.  Any integer would do (periodicity): the midpoints
+    choose one."""
+    if not (length.imag == 0 and span.imag == 0 and span.real > 0):
+        return 0
+    whole = (abs(length.real.mid()) / span.real.mid()).floor().unique_fmpz()  # the floor of a ratio of
+    if whole is None:  # two exact numbers, rounded at the working precision: an integer ball
+        return 0
+    return int(whole) if length.real.mid() >= 0 else -int(whole)
+
+
 def _compile_path(e: sp.Integral):
     import flint
 
     var, lo, hi = e.limits[0]
     lower, upper, body = _compile(lo), _compile(hi), _compile(e.function)
+    # a periodic integrand over many periods (sin² Ωt √(a + b cos² Ωt) over four turns) is
+    # integrated over one period and the rest: ∫_a^b = m·∫_a^{a+sP} + ∫_{a+nP}^b, n = s·m
+    # whole periods — the same integral by periodicity, at a fraction of the evaluations
+    one_period = period(e.function, var)
+    span = _compile(one_period) if one_period is not None else None
 
     def integral(env, an, work):
         a, b = lower(env, an, work), upper(env, an, work)
@@ -721,12 +768,21 @@ def _compile_path(e: sp.Integral):
             inner[var] = z
             return body(inner, analytic, work)
 
-        # flint stops by itself at eval_limit: without it, an integrand that has turned NaN
-        # would still be subdivided up to flint's default limit (millions of calls)
-        limit = work.remaining()
-        if limit is None:
-            return flint.acb.integral(f, a, b)
-        if limit <= 0:  # spent (and flint would read an eval_limit of 0 as its default)
-            return flint.acb("nan")
-        return flint.acb.integral(f, a, b, eval_limit=limit)
+        def over(x, y):
+            # flint stops by itself at eval_limit: without it, an integrand that has turned NaN
+            # would still be subdivided up to flint's default limit (millions of calls)
+            limit = work.remaining()
+            if limit is None:
+                return flint.acb.integral(f, x, y)
+            if limit <= 0:  # spent (and flint would read an eval_limit of 0 as its default)
+                return flint.acb("nan")
+            return flint.acb.integral(f, x, y, eval_limit=limit)
+
+        if span is not None:
+            step = span(env, an, work)
+            n = _whole_periods(b - a, step)
+            if abs(n) >= PERIODS_WORTH_FOLDING:
+                step = step if n > 0 else -step  # along the path
+                return abs(n) * over(a, a + step) + over(a + abs(n) * step, b)
+        return over(a, b)
     return integral
