@@ -545,6 +545,33 @@ def test_a_periodic_integrand_over_many_periods_is_integrated_over_one_and_the_r
     assert spent[0] < spent[1] / 2
 
 
+def test_a_rung_computes_in_balls_first_and_in_mpmath_where_a_ball_does_not_hold_every_bit(monkeypatch):
+    """A closed form is evaluated in python-flint balls, its midpoint returned where the ball
+    holds every working bit (mpmath is then not even compiled); a node without a ball form
+    (floor), or a ball that does not hold the bits (a difference that cancels to 0), leaves the
+    value to mpmath; an expression with an integral keeps the quadratures of mp_function."""
+    x, m = sp.symbols("x m", positive=True)
+    compiled = []
+    real = bridge.mp_function
+    monkeypatch.setattr(bridge, "mp_function", lambda e, a: compiled.append(e) or real(e, a))
+    bridge.rung_function.cache_clear()
+    closed = sp.elliptic_f(x, m) * sp.exp(-x) + sp.sqrt(1 + x**3) / (3 + sp.cos(x))
+    f = bridge.rung_function(closed, (m, x))
+    with mpmath.workdps(40):
+        got = f(mpmath.mpf("0.3"), mpmath.mpf("1.1"))
+        v, w = mpmath.mpf("1.1"), mpmath.mpf("0.3")
+        truth = mpmath.ellipf(v, w) * mpmath.exp(-v) + mpmath.sqrt(1 + v**3) / (3 + mpmath.cos(v))
+        assert abs(got - truth) <= abs(truth) * mpmath.mpf(10) ** -39
+    assert compiled == []
+    for e in (x * sp.floor(x), sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1):
+        with mpmath.workdps(30):
+            value = bridge.rung_function(e, (x,))(mpmath.mpf("2.5"))
+            assert abs(value - real(e, (x,))(mpmath.mpf("2.5"))) <= mpmath.mpf(10) ** -29
+    assert len(compiled) == 2
+    integral = sp.Integral(sp.exp(-x * m), (m, 0, 1))
+    assert bridge.rung_function(integral, (x,)) is real(integral, (x,))
+
+
 def test_identities_in_sines_and_cosines_are_proved_in_their_exponential_form(monkeypatch):
     """Addition theorems and products of trigonometric functions of any argument (an undefined
     function's included) are proved without simplify; a near miss is not."""

@@ -398,12 +398,12 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     if len(pts) < max(3, count // 2):
         return Inconclusive(Method.NONE, "the domain's constraints leave too few points")
     args = tuple(sorted(syms, key=str))
-    fp = bridge.mp_function(p, args)
-    fs = bridge.mp_function(scale, args) if scale is not None else None
+    fp = bridge.rung_function(p, args)
+    fs = bridge.rung_function(scale, args) if scale is not None else None
     # the derived side is shared by an erratum's printed and corrected forms (same points):
     # its values are remembered, keyed by the expression, the exact point and the digits
     d_args = tuple(sorted(d.free_symbols, key=str))
-    fd_own = bridge.mp_function(d, d_args)
+    fd_own = bridge.rung_function(d, d_args)
 
     def fd(pt, dps):
         key = (d, tuple(pt[a] for a in d_args), dps)  # the expression and exact numbers: hashed structurally
