@@ -37,14 +37,15 @@ def test_verdict_json_round_trip():
 
 @pytest.fixture
 def scratch_registry():
-    """The test's registrations are removed again, so the real registry stays the catalog's."""
-    from quasicentral.engine.registry import REGISTRY
+    """The test's registrations (ids "test:…") are removed again with their results, so the
+    real registry stays the catalog's."""
+    from quasicentral.engine.registry import REGISTRY, unregister
 
     texts.activate(texts.shipped())  # the shipped texts' steps are registered before, not during
     before = set(REGISTRY)
     yield
-    for key in set(REGISTRY) - before:
-        del REGISTRY[key]
+    assert all(key.startswith("test:") for key in set(REGISTRY) - before)
+    unregister("test")
 
 
 def test_registry_refuses_duplicates_and_missing_docstrings(scratch_registry):
@@ -118,6 +119,33 @@ def test_dimensional_inconsistency_refutes_even_when_the_comparison_cannot_be_se
     assert isinstance(v, Refuted) and v.method is Method.DIMENSIONAL and "derivation failed" in v.detail
     v = check([right], dims, REGISTRY["test:fails"], "test:fails", OPTS, TABLE)
     assert isinstance(v, Inconclusive) and "derivation failed" in v.detail
+
+
+def test_a_printed_equation_is_kept_as_printed_and_decided_only_where_the_comparison_begins(scratch_registry):
+    """A transcription's Eq is not decided by sympy while it is read; where the comparison
+    begins, one whose sides are the same expression, or two numbers, is decided (and cannot be
+    compared), while one that is false for every value is refuted by the numbers."""
+    from quasicentral.engine.checker import check, decided
+    from quasicentral.engine.registry import REGISTRY
+
+    read = TABLE.parse("Eq(t, t)")
+    assert isinstance(read, sp.Eq) and read.lhs == read.rhs
+    assert decided(read) is sp.true and decided(TABLE.parse("Eq(2, 3)")) is sp.false
+    assert decided(TABLE.parse("Eq(l, g*t**2)")) == sp.Eq(l, g * t**2)
+    assert decided(TABLE.parse("Eq(sqrt(4), 2)")) is sp.true
+
+    @derives("test:period", unknowns=(t,), domain=Domain.of(ranges={g: (1, 10), l: (1, 2), t: (0, 1)}))
+    def period():
+        """t = √(l/g)."""
+        return sp.Eq(t, sp.sqrt(l / g))
+
+    dims = texts.entry("pendulum:53").dims
+    der = REGISTRY["test:period"]
+    v = check([TABLE.parse("Eq(t, t)")], dims, der, "test:period", OPTS, TABLE)
+    assert isinstance(v, Inconclusive) and "evaluates to True" in v.detail
+    v = check([TABLE.parse("Eq(t, t + sqrt(l/g))")], dims, der, "test:period", OPTS, TABLE)
+    assert isinstance(v, Refuted)
+    assert isinstance(check([TABLE.parse("Eq(t, sqrt(l/g))")], dims, der, "test:period", OPTS, TABLE), Verified)
 
 
 def test_fundamental_theorem_settles_an_integral_sympy_cannot_do():

@@ -111,10 +111,23 @@ class CannotCompare(Exception):
     """The printed relations cannot be paired with the derivation's result (the reason)."""
 
 
+def decided(rel: sp.Basic) -> sp.Basic:
+    """A printed equation whose two sides are the same expression (True), or two numbers (sympy
+    decides), as sympy's ``Eq`` would give it; any other relation as it is (a transcription
+    keeps its equations undecided: :func:`quasicentral.notation.symbols.printed_eq`)."""
+    if isinstance(rel, sp.Eq):
+        if rel.lhs == rel.rhs:
+            return sp.true
+        if rel.lhs.is_number and rel.rhs.is_number:
+            return sp.Eq(rel.lhs, rel.rhs)
+    return rel
+
+
 def claims_for(printed: list[sp.Basic], derivation: Derivation, result) -> list[Claim]:
     """Pair the printed relations with the derivation's result; :class:`CannotCompare` says
     why they cannot be."""
     mode = derivation.mode
+    printed = [decided(rel) for rel in printed]
     if mode is Mode.CONDITION:
         if not all(isinstance(r, sp.Eq) for r in printed):
             raise CannotCompare("a condition is an equation")

@@ -99,10 +99,18 @@ def arccotg(a):
     return sp.pi / 2 - sp.atan(a)
 
 
+def printed_eq(lhs, rhs, evaluate: bool = False):
+    """An equation as printed: sympy does not decide it (``Eq`` would ask whether lhs − rhs is
+    zero — an assumption query on the whole difference, a tenth of a verification's time —
+    and turn x = x into True).  A side that is the other, or two numbers, are still seen as
+    decided where the comparison begins (:func:`quasicentral.engine.checker.claims_for`)."""
+    return sp.Eq(lhs, rhs, evaluate=evaluate)
+
+
 #: Functions and constants every transcription may use (a text's symbols come on top).
 FUNCTIONS: dict[str, object] = {
     "D": D, "Fj": Fj, "Ej": Ej, "Kc": Kc, "Ec": Ec, "arccotg": arccotg,
-    "Eq": sp.Eq, "Integral": sp.Integral, "Derivative": sp.Derivative, "Sum": sp.Sum,
+    "Eq": printed_eq, "Integral": sp.Integral, "Derivative": sp.Derivative, "Sum": sp.Sum,
     "sqrt": sp.sqrt, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "exp": sp.exp,
     "log": sp.log, "ln": sp.log, "asin": sp.asin, "acos": sp.acos, "atan": sp.atan,
     "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh, "pi": sp.pi, "oo": sp.oo, "I": sp.I,
