@@ -276,6 +276,8 @@ def _seen_nonzero(e: sp.Expr) -> bool:
     heads = [f.func if not isinstance(f, sp.Derivative) else (f.expr.func, f.variable_count) for f in opaque]
     if len(heads) != len(set(heads)):
         return False  # f(a) and f(b): simplify might show a = b, independent values would not
+    if any(getattr(f, "is_" + fact) for f in opaque for fact in _UNSAMPLED_FACTS):
+        return False
     # derivatives first (they contain the function), then the functions
     sampled = e.xreplace({f: d for f, d in opaque.items() if isinstance(f, sp.Derivative)})
     sampled = sampled.xreplace({f: d for f, d in opaque.items() if not isinstance(f, sp.Derivative)})
