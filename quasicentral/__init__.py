@@ -11,7 +11,17 @@ python-flint, record the errata.  The layers, from the bottom:
 
 import os
 
-__all__ = ["load_text", "new_text", "shipped_texts"]
+__all__ = ["load_text", "new_text", "shipped_texts", "workspace", "Workspace", "InputError",
+           "derives", "derived", "shared", "symbols_of", "Domain", "D"]
+
+#: where each public name lives (imported on first use: a low layer must not pull the API in)
+_HOMES = {"load_text": "quasicentral.api", "new_text": "quasicentral.api", "shipped_texts": "quasicentral.api",
+          "workspace": "quasicentral.api", "InputError": "quasicentral.api",
+          "Workspace": "quasicentral.engine.workspace",
+          # what a text's derivation module needs, in one import line
+          "derives": "quasicentral.engine.registry", "derived": "quasicentral.engine.registry",
+          "shared": "quasicentral.engine.registry", "symbols_of": "quasicentral.engine.texts",
+          "Domain": "quasicentral.notation.domain", "D": "quasicentral.notation.symbols"}
 
 # sympy reads the size of its expression cache (an LRU, 1000 entries by default) once, when it is
 # first imported.  A derivation or a verification meets the same sub-expressions far more often
@@ -23,8 +33,8 @@ os.environ.setdefault("SYMPY_CACHE_SIZE", SYMPY_CACHE_SIZE)
 
 def __getattr__(name: str):
     # lazily: importing a low layer (quasicentral.models, say) must not import the API's engine
-    if name in __all__:
-        from quasicentral import api
+    if name in _HOMES:
+        import importlib
 
-        return getattr(api, name)
+        return getattr(importlib.import_module(_HOMES[name]), name)
     raise AttributeError(f"module 'quasicentral' has no attribute {name!r}")

@@ -9,7 +9,6 @@ from pathlib import Path
 import pytest
 from hypothesis import settings
 
-from quasicentral.engine import texts
 from quasicentral.engine.checker import Options
 
 # tests/data holds texts (a derivation module registers itself when imported): never collected,
@@ -51,14 +50,16 @@ def session_cache(tmp_path_factory, worker_id):
 def outcomes(session_cache, tmp_path_factory, worker_id):
     from filelock import FileLock
 
-    from quasicentral.engine import run as verify
+    from quasicentral.engine import run
+    import shipped
 
     shared = _session_dir(tmp_path_factory, worker_id)
-    entries = texts.entries(texts.shipped())
+    ws = shipped.workspace()
+    entries = [e for t in ws.shipped() for e in t.entries.values()]
     with FileLock(str(shared / "verdict-cache.lock")):
         # cold verdicts for the first worker (derivations other tests kept are read back),
         # read back by the others
-        got = verify.run(entries, Options(), use_cache=True)
+        got = run.run(ws, entries, Options(), use_cache=True)
     return dict(zip([e.id for e in entries], got))
 
 

@@ -4,19 +4,26 @@ errata of (8)–(10) from other sides, and (8a) as the radial equation of sectio
 import random
 
 import mpmath
+import pytest
 import sympy as sp
 
-from derivations.brepta1953 import s3 as s3
-from quasicentral.engine import texts
-from quasicentral.engine.registry import derived
+import shipped
+s3 = shipped.module('brepta1953', 's3')
+from shipped import derived
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 
 S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
 C1, C2, C3, C4, R, S, g, l, m, phi, psi, rho, t = S_("C1 C2 C3 C4 R S g l m phi psi rho t")
 
-texts.activate(texts.shipped())
 
+
+
+@pytest.fixture(autouse=True)
+def _shipped_context():
+    """The module's helpers ask derived() for results: the shipped workspace's derivations."""
+    with shipped.context():
+        yield
 
 def _value(expr, seed=1, **fixed):
     """expr at a random point (φ jets and parameters), as a float."""

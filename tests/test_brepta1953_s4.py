@@ -7,11 +7,13 @@ import dataclasses
 import pytest
 import sympy as sp
 
-from derivations.brepta1953 import s4 as s4
-from quasicentral.engine import texts
-from quasicentral.engine.checker import Options, check
+import shipped
+s4 = shipped.module('brepta1953', 's4')
+from quasicentral.engine.checker import Options
+from shipped import check
 from quasicentral.notation.domain import Domain
-from quasicentral.engine.registry import REGISTRY, as_list, derived
+from quasicentral.engine.registry import as_list
+from shipped import derived
 from quasicentral.notation.symbols import D
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 
@@ -21,9 +23,15 @@ S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
 parse = S_.parse
 from quasicentral.engine.verdict import Refuted, Verified
 
-texts.activate(texts.shipped())
 OPTS = Options(symbolic=False, points=12)
 
+
+
+@pytest.fixture(autouse=True)
+def _shipped_context():
+    """The module's helpers ask derived() for results: the shipped workspace's derivations."""
+    with shipped.context():
+        yield
 
 def _solution(eid):
     return {e.lhs: e.rhs for e in derived(eid)}
@@ -75,7 +83,7 @@ def test_21_is_the_limit_of_19_as_kappa_tends_to_omega():
 
 
 def test_time_elimination_gives_the_corrected_20_and_22():
-    recs, _ = texts.records(texts.shipped())
+    recs, _ = shipped.records()
     pts = [{R0: sp.Rational(3, 10), v0: sp.Rational(7, 5), kappa: sp.Rational(1, 3), omega: sp.Rational(9, 4),
             n: 2, x: sp.Rational(-1, 20), y: sp.Rational(1, 30)},
            {R0: sp.Rational(1, 2), v0: sp.Rational(1, 7), kappa: sp.Rational(2, 1), omega: sp.Rational(1, 3),
@@ -106,7 +114,7 @@ def _residual_20(relation, theta, values=None):
 
 
 def test_20_branch_the_corrected_form_without_n_holds_on_the_first_half_turn_only():
-    recs, _ = texts.records(texts.shipped())
+    recs, _ = shipped.records()
     corr = recs["brepta1953:20"].corrected
     no_branch = corr.subs(n, 0)
     for k in range(8):
@@ -121,10 +129,10 @@ def test_20_branch_the_corrected_form_without_n_holds_on_the_first_half_turn_onl
 def test_20_branch_through_the_engine():
     """The check itself sees the branch: the dimension-fixed form without nπ verifies on the first
     half-turn, and is refuted over eight half-turns."""
-    recs, _ = texts.records(texts.shipped())
+    recs, _ = shipped.records()
     no_branch = [recs["brepta1953:20"].corrected.subs(n, 0)]
-    entry = texts.entry("brepta1953:20")
-    der = REGISTRY["brepta1953:20"]
+    entry = shipped.entry("brepta1953:20")
+    der = shipped.derivation("brepta1953:20")
     first = dataclasses.replace(der, domain=Domain.of(ranges={omega: (sp.Rational(1, 10), 10), th: (0, sp.pi)},
                                                       defaults=False))
     assert isinstance(check(no_branch, entry.dims, first, "test-20-first", OPTS, S_), Verified)
@@ -134,11 +142,11 @@ def test_20_branch_through_the_engine():
 def test_printed_20_and_22_hold_when_R0_equals_v0_numerically():
     """The print's x − κy coincides with x − (R0κ/v0)y when R0 = v0 (the data of figs. 7, 8):
     the printed forms are then right on the first half-turn (and always for (22))."""
-    p20 = texts.entry("brepta1953:20").relations()[0]
+    p20 = shipped.entry("brepta1953:20").relations()[0]
     assert _residual_20(p20, sp.pi / 3, {v0: sp.Rational(1, 5)}) < 1e-30
     assert _residual_20(p20, sp.pi / 3) > 1e-3
     crit = _solution("brepta1953:21")
-    p22 = texts.entry("brepta1953:22").relations()[0]
+    p22 = shipped.entry("brepta1953:22").relations()[0]
     pt = {R0: sp.Rational(1, 10), v0: sp.Rational(1, 10), kappa: sp.sqrt(10), t: sp.Rational(3, 10)}
     res = (p22.lhs - p22.rhs).subs(crit).subs(pt)
     assert abs(sp.N(res, 40)) < 1e-35
@@ -156,8 +164,8 @@ def test_printed_rounding_of_omega_is_a_real_comparison():
     w = sp.sqrt(sp.Rational(984, 100))
     assert s4.round_half_up(w, 3) == sp.Rational(3137, 1000)
     assert abs(sp.N(w - sp.Rational(3137, 1000), 30)) < sp.Rational(5, 10000)
-    entry = texts.entry("brepta1953:example-fig7")
-    der = REGISTRY["brepta1953:example-fig7"]
+    entry = shipped.entry("brepta1953:example-fig7")
+    der = shipped.derivation("brepta1953:example-fig7")
     good = entry.relations()
     assert isinstance(check(good, entry.dims, der, "test-fig7", OPTS, S_), Verified)
     for wrong in ("3136/1000", "3138/1000"):

@@ -11,17 +11,16 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derivations.brepta1953 import s5 as s5
-from quasicentral.engine import texts
+import shipped
+s5 = shipped.module('brepta1953', 's5')
 from quasicentral.notation.domain import substitute_definitions
-from quasicentral.engine.registry import derived
+from shipped import derived
 from quasicentral.engine.texts import symbols_of, SHIPPED_ROOT
 
 S_ = symbols_of(SHIPPED_ROOT / "brepta1953" / "text.toml")
 Omega, R0, beta, g, k, l, t, u, v0, z, zeta = S_("Omega R0 beta g k l t u v0 z zeta")
 
-texts.activate(texts.shipped())
-ERRATA, _ = texts.records(texts.shipped())
+ERRATA, _ = shipped.records()
 #: parameter sets (R0, v0, Ω, β): u = R0Ω > v0 as in the paper (moderate and near-circular and
 #: strongly elliptic), and one with u < v0 (k² < 0), where the corrected form holds as well
 CASES = [
@@ -31,6 +30,13 @@ CASES = [
     (sp.Rational(1, 4), sp.Rational(3, 2), sp.Integer(2), sp.Rational(1, 2)),
 ]
 
+
+
+@pytest.fixture(autouse=True)
+def _shipped_context():
+    """The module's helpers ask derived() for results: the shipped workspace's derivations."""
+    with shipped.context():
+        yield
 
 def _values(case):
     r0, vv, om, b = case
@@ -54,7 +60,7 @@ def _corrected_particular():
 
 
 def _printed_particular():
-    return texts.entry("brepta1953:particular-solution").relations()
+    return shipped.entry("brepta1953:particular-solution").relations()
 
 
 def _quadrature_solution(case, dps=30):
@@ -191,7 +197,7 @@ def test_sign_of_the_F_terms_is_right():
 def test_limit_k_to_zero_is_the_conical_solution():
     """u = v0(1 + ε), ε → 0 (k² ≈ 2ε): the corrected general solution tends to the conical
     particular solution (31)–(32) with R0Ω = v0; the difference is O(ε)."""
-    conical = texts.entry("brepta1953:conical-particular-solution").relations()
+    conical = shipped.entry("brepta1953:conical-particular-solution").relations()
     vv, om, b = sp.Rational(4, 5), sp.Integer(2), sp.Rational(1, 3)
     for eps, tol in ((sp.Rational(1, 10**12), 1e-10), (sp.Rational(1, 10**20), 1e-18)):
         r0 = vv * (1 + eps) / om

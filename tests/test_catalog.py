@@ -1,16 +1,15 @@
 """The catalog of printed equations: complete, well-formed, dimensionally checked."""
 
+import shipped
 import pytest
 import sympy as sp
 
-from quasicentral.engine import texts
-
 from quasicentral.engine.catalog import CatalogError, load_file
 from quasicentral.engine.checker import decided
-from quasicentral.notation.dimensions import check_relation
-from quasicentral.engine.registry import REGISTRY
+from quasicentral.engine.dimensions import check_relation
 
-ENTRIES = texts.entries(texts.shipped())
+WS = shipped.workspace()
+ENTRIES = [e for t in WS.shipped() for e in t.entries.values()]
 IDS = [e.id for e in ENTRIES]
 
 
@@ -31,7 +30,7 @@ def test_ids_are_unique_and_labelled():
 
 @pytest.mark.parametrize("eid", IDS)
 def test_transcription_parses(eid):
-    e = texts.entry(eid)
+    e = shipped.entry(eid)
     for rel in e.relations():
         assert isinstance(rel, sp.Basic)
         assert decided(rel) not in (sp.true, sp.false), "a transcription must not be decided True/False"
@@ -42,11 +41,11 @@ def test_transcription_parses(eid):
 def test_dimensions(eid):
     """Every entry is dimensionally consistent, unless it is a registered erratum (a printed
     equation that mixes units is an error in print, and must be recorded as one)."""
-    e = texts.entry(eid)
+    e = shipped.entry(eid)
     checks = [check_relation(r, e.dims) for r in e.relations()]
-    problems = [str(c) for c in checks if c.inconsistent or c.undetermined]
+    problems = [c for c in checks if c.inconsistent or c.undetermined]
     assert not any(c.undetermined for c in checks), f"a dimension is not declared: {problems}"
-    errs, _ = texts.records(texts.shipped())
+    errs, _ = shipped.records()
     if problems:
         assert eid in errs, f"dimensionally inconsistent and not a registered erratum: {problems}"
     if eid in errs:
@@ -56,11 +55,10 @@ def test_dimensions(eid):
 
 
 def test_every_entry_has_a_derivation():
-    texts.activate(texts.shipped())
-    missing = [i for i in IDS if i not in REGISTRY]
+    missing = [i for i in IDS if WS.derivation(i) is None]
     assert not missing
-    shipped = {t.id for t in texts.shipped()}
-    stray = [i for i in REGISTRY if i.split(":")[0] in shipped and i not in set(IDS)]
+    ours = {t.id for t in WS.shipped()}
+    stray = [i for i in WS.derivations.by_id if i.split(":")[0] in ours and i not in set(IDS)]
     assert not stray, "derivations for ids the catalog does not have"
 
 
@@ -68,7 +66,7 @@ def test_malformed_file_is_refused(tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text('source = "brepta1953"\nsection = "2"\n[[equation]]\nid = "brepta1953:x"\nname = "x"\n'
                    "latex = 'x'\nprinted = 'Eq(x, nosuchname)'\n")
-    table = texts.get("brepta1953").symbols
+    table = shipped.text("brepta1953").symbols
     with pytest.raises(CatalogError, match=r"bad.toml:7: brepta1953:x: unknown name nosuchname"):
         load_file(bad, "brepta1953", table)
     bad.write_text('source = "brepta1953"\nsection = "2"\n[[equation]]\nid = "brepta1953:x"\nname = "x"\n')
@@ -82,7 +80,4 @@ def test_malformed_file_is_refused(tmp_path):
 @pytest.mark.parametrize("eid", IDS)
 def test_uses_are_what_the_derivation_uses(eid):
     """A derivation's declared ``uses`` are exactly the ids it asks ``derived()`` for."""
-    from quasicentral.engine.registry import actually_used
-
-    texts.activate(texts.shipped())
-    assert actually_used(eid) == set(REGISTRY[eid].uses)
+    assert WS.used(eid) == set(shipped.derivation(eid).declared_uses)

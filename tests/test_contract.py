@@ -7,6 +7,8 @@ cheap entries, in a temporary verdict cache)."""
 
 from __future__ import annotations
 
+import shipped
+
 import io
 import json
 import os
@@ -95,10 +97,10 @@ class _ClosedPipe(io.StringIO):
 @pytest.mark.parametrize("command", ["errata", "catalog", "verify"])
 def test_closed_pipe_in_process(command, cache, monkeypatch, capsys):
     """errata and catalog read the whole catalog: here a small selection stands in for it."""
-    from quasicentral.engine import texts
+    from quasicentral.cli import verification
 
-    few = [texts.entry("brepta1953:1"), texts.entry("brepta1953:4")]
-    monkeypatch.setattr(cli, "_selected", lambda args: few)
+    few = [shipped.entry("brepta1953:1"), shipped.entry("brepta1953:4")]
+    monkeypatch.setattr(verification, "selected_entries", lambda args, ws, texts: few)
     monkeypatch.setattr(sys, "stdout", _ClosedPipe())
     code = main([command])
     assert code == 0
@@ -107,12 +109,15 @@ def test_closed_pipe_in_process(command, cache, monkeypatch, capsys):
 
 def test_a_result_still_fails_when_the_pipe_is_closed(cache, monkeypatch):
     """The reader going away does not turn an unexpected result into a success."""
-    from quasicentral.engine import run, texts
-    from quasicentral.engine.verdict import Inconclusive, Method, Outcome
+    from quasicentral.cli import verification
+    from quasicentral.engine import run
+    from quasicentral.engine.reasons import Code, Reason
+    from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Status
 
-    few = [texts.entry("brepta1953:1")]
-    monkeypatch.setattr(cli, "_selected", lambda args: few)
-    bad = Outcome("brepta1953:1", Inconclusive(Method.NONE, "stand-in"), "unexpected", problems=("stand-in",))
+    few = [shipped.entry("brepta1953:1")]
+    monkeypatch.setattr(verification, "selected_entries", lambda args, ws, texts: few)
+    bad = Outcome("brepta1953:1", Inconclusive(Method.NONE, Reason(Code.NOTHING_TO_CHECK)), Status.UNEXPECTED,
+                  problems=(Reason(Code.NOTHING_TO_CHECK),))
     monkeypatch.setattr(run, "run", lambda *a, **k: [bad])
     monkeypatch.setattr(sys, "stdout", _ClosedPipe())
     assert main(["verify", "--no-cache"]) == 1  # not a whole run read back: the stand-in decides
@@ -173,7 +178,7 @@ def test_report_refuses_a_symlinked_figures_folder(tmp_path):
     out.mkdir()
     (out / report.FIGURE_DIR).symlink_to(elsewhere, target_is_directory=True)
     with pytest.raises(files.UnsafePath, match="symbolic link"):
-        report.write(out, {"a.tex": f"\\includegraphics{{{report.FIGURE_DIR}/fig7a.png}}"})
+        report.write(out, {"a.tex": f"\\includegraphics{{{report.FIGURE_DIR}/fig7a.png}}"}, [shipped.text("brepta1953")])
     assert list(elsewhere.iterdir()) == []
 
 
@@ -181,7 +186,7 @@ def test_report_writes_its_figures_inside_out(tmp_path):
     from quasicentral.documents import report
 
     out = tmp_path / "out"
-    paths = report.write(out, {"a.tex": f"\\includegraphics{{{report.FIGURE_DIR}/fig7a.png}}"})
+    paths = report.write(out, {"a.tex": f"\\includegraphics{{{report.FIGURE_DIR}/fig7a.png}}"}, [shipped.text("brepta1953")])
     assert paths == [out / "a.tex", out / report.FIGURE_DIR / "fig7a.png"]
     assert (out / report.FIGURE_DIR / "fig7a.png").read_bytes().startswith(b"\x89PNG")
     assert sorted(p.name for p in out.rglob("*")) == ["a.tex", "fig7a.png", report.FIGURE_DIR]
@@ -424,16 +429,17 @@ def test_progress_bar_disabled_draws_nothing_but_keeps_the_count():
 
 
 def test_verify_reports_progress(cache):
-    from quasicentral.engine import run, texts
+    from quasicentral.engine import run
     from quasicentral.engine.checker import Options
 
-    entries = [texts.entry("brepta1953:1"), texts.entry("brepta1953:4")]
+    ws = shipped.workspace()
+    entries = [shipped.entry("brepta1953:1"), shipped.entry("brepta1953:4")]
     seen: list[Progress] = []
-    run.run(entries, Options(), use_cache=False, jobs=1, progress=seen.append)
+    run.run(ws, entries, Options(), use_cache=False, jobs=1, progress=seen.append)
     assert [(p.done, p.total) for p in seen] == [(0, 2), (1, 2), (2, 2)]
     assert [p.current for p in seen[1:]] == ["brepta1953:1", "brepta1953:4"]
     seen.clear()
-    run.run(entries, Options(), use_cache=True, progress=seen.append)
+    run.run(ws, entries, Options(), use_cache=True, progress=seen.append)
     assert [(p.done, p.total, p.cached, p.current) for p in seen] == [(2, 2, 2, "cache")]
 
 
@@ -441,7 +447,8 @@ def test_mutate_reports_progress():
     from quasicentral.engine import mutate
 
     seen: list[Progress] = []
-    res = mutate.run(ids=["brepta1953:1"], per_entry=1, jobs=1, progress=seen.append)
+    res = mutate.run(shipped.workspace(), [shipped.text("brepta1953")], ids=["brepta1953:1"], per_entry=1, jobs=1,
+                     progress=seen.append)
     assert res["entries"] == 1
     assert [(p.done, p.total) for p in seen] == [(0, 1), (1, 1)] and seen[-1].current == "brepta1953:1"
 

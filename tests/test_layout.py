@@ -31,7 +31,7 @@ def _layer(module: str) -> str | None:
 
 def _modules():
     for path in sorted(PACKAGE.rglob("*.py")):
-        if "__pycache__" in path.parts:
+        if "__pycache__" in path.parts or (PACKAGE / "texts") in path.parents:  # the shipped texts are data
             continue
         rel = path.relative_to(PACKAGE.parent).with_suffix("")
         parts = rel.parts[:-1] if rel.name == "__init__" else rel.parts

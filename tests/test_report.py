@@ -15,6 +15,8 @@ generations on one machine are compared byte for byte, everything included.
 
 from __future__ import annotations
 
+import shipped
+
 import difflib
 import os
 import re
@@ -27,19 +29,18 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from quasicentral.engine import texts
 from quasicentral import files
-
-
-
-from quasicentral.documents import report
+from quasicentral.documents import blocks, derivation_report, report, steps as steps_mod
+from quasicentral.engine.options import Options
 from quasicentral.notation import bridge
 from quasicentral.notation.symbols import D, Ec, Ej, Fj, Kc, arccotg
 from quasicentral.cli import main
 from quasicentral.documents.latex import Notation, display_rows, escape, paper_latex, text, using, with_math
 
-S = texts.get("brepta1953").symbols  # the printer speaks a text's notation: here Brepta's
-P = texts.get("pendulum").symbols
+S = shipped.symbols("brepta1953")  # the printer speaks a text's notation: here Brepta's
+P = shipped.symbols("pendulum")
+WS = shipped.workspace()
+TEXTS = WS.shipped()
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "reports"
@@ -99,8 +100,8 @@ def _balanced(row: str) -> bool:
 
 
 def _all_printed_latex():
-    errs, _ = texts.records(texts.shipped())
-    out = [(e.id, e.latex) for e in texts.entries(texts.shipped())]
+    errs, _ = shipped.records()
+    out = [(e.id, e.latex) for t in TEXTS for e in t.entries.values()]
     out += [(i + "/corrected", r.corrected_latex) for i, r in errs.items()]
     return out
 
@@ -122,12 +123,9 @@ _ALLOWED = set("áéíóúýčďěňřšťůžÁÉÍÓÚÝČĎĚŇŘŠŤŮŽ")
 
 
 def _prose():
-    from quasicentral.engine.registry import REGISTRY
-
-    texts.activate(texts.shipped())
-    errs, cleared = texts.records(texts.shipped())
-    out = [d.doc for d in REGISTRY.values()] + [r.note for r in errs.values()]
-    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for e in texts.entries(texts.shipped())]
+    errs, cleared = shipped.records()
+    out = [d.doc for d in WS.derivations.by_id.values()] + [r.note for r in errs.values()]
+    out += [c.note + c.suspicion for c in cleared.values()] + [e.name + e.note for t in TEXTS for e in t.entries.values()]
     return out
 
 
@@ -153,12 +151,12 @@ def generated(outcomes, verdict_cache, tmp_path_factory):
     overlaps with the compilation.  It starts after this one has drawn the figures: it copies
     those the session's cache keeps for the same data (keyed by the data, so a figure whose data
     depended on the hash seed would be drawn anew, and differ)."""
-    texts.activate(texts.shipped(), exclusive=True)  # the golden documents are the shipped texts'
+    records = report.records_for(WS, TEXTS, Options())  # the golden documents are the shipped texts'
     docs: dict[str, str] = {}
     for kinds, langs in report.GOLDEN:
-        docs.update(report.generate(kinds, langs, outcomes))
+        docs.update(report.generate(records, kinds, langs))
     out = tmp_path_factory.mktemp("reports")
-    report.write(out, docs)
+    report.write(out, docs, TEXTS)
     second = tmp_path_factory.mktemp("second")
     # the session's cache: verdicts, derivations and figures read back (a derivation whose result
     # depended on the hash seed would show against the golden files: each session draws its own)
@@ -221,7 +219,7 @@ def test_golden_reports(generated):
             diffs += list(difflib.unified_diff(old.splitlines(), new.splitlines(), f"reports/{name}",
                                                "generated", n=1, lineterm=""))[:40]
     problems += [f"stale (no longer generated): reports/{n}" for n in committed if n not in names]
-    for fig in report.figures_needed(docs):
+    for fig in report.figures_needed(docs, TEXTS):
         if not (GOLDEN / fig.path).is_file():
             problems.append(f"missing figure: reports/{fig.path}")
     if not (GOLDEN / report.VERSIONS_FILE).is_file():
@@ -233,12 +231,12 @@ def test_golden_reports(generated):
 
 
 def test_versions_file_names_the_software():
-    tex = report.versions_tex()
+    tex = blocks.versions_tex()
     for name in ("Python", "sympy", "mpmath", "numpy", "scipy", "python-flint", "matplotlib"):
         assert name in tex
     golden = GOLDEN / report.VERSIONS_FILE
     if golden.is_file():
-        assert all(n in golden.read_text(encoding="utf-8") for n, _ in report.PACKAGES)
+        assert all(n in golden.read_text(encoding="utf-8") for n, _ in blocks.PACKAGES)
 
 
 def test_generation_is_byte_identical(generated):
@@ -252,7 +250,7 @@ def test_generation_is_byte_identical(generated):
     assert sorted(p.name for p in tmp_path.glob("*.tex")) == sorted(docs)
     for text_ in docs.values():
         assert str(REPO) not in text_ and str(tmp_path) not in text_  # no absolute paths
-    for fig in report.figures_needed(docs):  # figures are deterministic too
+    for fig in report.figures_needed(docs, TEXTS):  # figures are deterministic too
         assert (tmp_path / fig.path).read_bytes() == (out / fig.path).read_bytes(), fig.path
 
 
@@ -260,8 +258,8 @@ def test_every_figure_is_included(generated):
     from quasicentral.studies import figures
 
     _, docs, _ = generated
-    names = {f.name for f in report.figures_needed(docs)}
-    assert names == {f.name for t in texts.shipped() for f in figures.of_text(t)}
+    names = {f.name for f in report.figures_needed(docs, TEXTS)}
+    assert names == {f.name for t in TEXTS for f in figures.of_text(t)}
 
 
 # --- compiling: every document once per test run, then the done-when checks on the PDFs ---------
@@ -346,8 +344,6 @@ def english_phrases() -> list[str]:
     of the checker, the prose of the derivations and the errata), as plain text to look for."""
     from quasicentral.documents.prose import WORDS
 
-    from quasicentral.engine.registry import REGISTRY
-
     def strings(v):
         if isinstance(v, str):
             yield v
@@ -363,7 +359,7 @@ def english_phrases() -> list[str]:
     for s in strings(WORDS["en"]):
         if s in cs or s.startswith("^"):
             continue
-        words = re.sub(r"\{[^{}]*\}", " ", report.plain(s)).split()
+        words = re.sub(r"\{[^{}]*\}", " ", blocks.plain(s)).split()
         words = [w for w in words if re.fullmatch(r"[A-Za-z'’,.:;()-]+", w)]
         if len(words) >= 3:
             out.add(" ".join(words[:3]))
@@ -372,8 +368,7 @@ def english_phrases() -> list[str]:
     out |= {"sympy proves", "points disagree", "agrees at", "consistent", "anglicky", "Dimensions",
             "As printed", "Re-derived", "Verdict", "Step", "Witness", "Exercise", "Solution", "the", "with",
             "which", "from", "printed"}
-    texts.activate(texts.shipped())
-    for d in REGISTRY.values():
+    for d in WS.derivations.by_id.values():
         for m in re.finditer(r"\b(?:the|from|with|which|where|gives|since) [a-z]+ [a-z]+\b", d.doc):
             out.add(m.group(0))
     return sorted(out)
@@ -404,8 +399,8 @@ def test_page_one_of_a_report_has_the_summary_and_the_errata_table(compiled):
         W = WORDS[name[-6:-4]]
         flat = _flat(first)
         for key in ("summary", "count_checked", "count_errata", "errata_table"):
-            assert report.plain(W[key]) in flat, (name, key)
-        assert report.plain(W["table_printed"]) in flat and report.plain(W["table_corrected"]) in flat, name
+            assert blocks.plain(W[key]) in flat, (name, key)
+        assert blocks.plain(W["table_printed"]) in flat and blocks.plain(W["table_corrected"]) in flat, name
 
 
 def _counts(tex: str) -> tuple[int, ...]:
@@ -441,7 +436,7 @@ def test_pdf_metadata_is_set(generated):
         if name == report.VERSIONS_FILE:
             continue
         lang = name[-6:-4]
-        assert f"pdflang={{{report.PDFLANG[lang]}}}" in tex, name
+        assert f"pdflang={{{blocks.PDFLANG[lang]}}}" in tex, name
         assert re.search(r"pdftitle=\{[^}]{20,}", tex) and "pdfauthor={quasicentral" in tex, name
 
 
@@ -475,7 +470,7 @@ def test_report_toml_is_read(tmp_path):
 
 
 def test_no_module_of_documents_names_a_shipped_text():
-    names = {t.id for t in texts.shipped()}
+    names = {t.id for t in TEXTS}
     for path in (REPO / "quasicentral" / "documents").glob("*.py"):
         src = path.read_text(encoding="utf-8")
         assert not [n for n in names if n in src], path.name
@@ -493,12 +488,18 @@ def test_clean_prose(raw, clean):
     assert clean_prose(raw) == clean
 
 
-def test_dimension_messages_are_sentences():
-    msg = "inconsistent: adds [L/T] to [L] in -kappa*y(t) + x(t): term x(t)"
-    for lang in ("en", "cs"):
-        s = report.dimension_sentence(msg, lang)
-        assert "inconsistent" not in s and "*" not in s and "adds" not in s and s.endswith(".")
-    assert report.dimension_sentence("consistent", "cs") == ""
+def test_dimension_findings_are_sentences():
+    from quasicentral.engine.dimensions import CONSISTENT, DimensionCheck, DimensionStatus
+    from quasicentral.engine.reasons import Code, Reason
+
+    finding = DimensionCheck(DimensionStatus.INCONSISTENT, Reason.of(Code.DIM_ADDS, first="L/T", other="L",
+                                                                    sum="-kappa*y(t) + x(t)", term="x(t)"))
+    with using(Notation.of(S)):
+        for lang in ("en", "cs"):
+            s = blocks.dimension_sentence((finding,), lang)
+            assert "inconsistent" not in s and "*" not in s and "adds" not in s and s.endswith(".")
+            assert "mathsf{L}" in s
+    assert blocks.dimension_sentence((CONSISTENT,), "cs") == ""
 
 
 def test_printer_names_are_one_overridable_mapping():
@@ -577,8 +578,8 @@ def test_failed_write_leaves_old_files_whole(tmp_path, monkeypatch):
 def test_pdf_failure_is_exit_1_with_log(tmp_path, monkeypatch, capsys):
     if shutil.which("latexmk") is None:
         pytest.skip("latexmk not installed")
-    monkeypatch.setattr(report, "outcomes_for_all", lambda progress=None: {})
-    monkeypatch.setattr(report, "generate", lambda kinds, langs, outcomes: {
+    monkeypatch.setattr(report, "records_for", lambda *a, **k: [])
+    monkeypatch.setattr(report, "generate", lambda records, kinds, langs: {
         "broken-report-en.tex": "\\documentclass{article}\\begin{document}\\ref{nowhere}\\end{document}\n"})
     code = main(["report", "--pdf", "--out", str(tmp_path)])
     err = capsys.readouterr().err
@@ -589,24 +590,27 @@ def test_errata_with_one_cause_are_explained_once():
     """Errata sharing a root cause (``[[cause]]`` in the errata data, ``Erratum.causes``) are
     grouped under it: its title and note once, then the displays it affects; an erratum without
     recorded causes is a group of its own."""
-    from types import SimpleNamespace as NS
+    from types import MappingProxyType as M
 
     from quasicentral.documents.prose import generic_prose
-    from quasicentral.engine.verdict import Method, Outcome, Refuted
+    from quasicentral.engine import errata
+    from quasicentral.engine.verdict import EntryRecords, Method, Outcome, Refuted, Status
 
-    entries = texts.entries(texts.shipped())[:3]
-    cause = NS(id="zeta-branch", title="The branch of the root", title_cs="Větev odmocniny", kind="range of validity",
-               note="Holds on the first half-period only.", note_cs="Platí jen na první půlperiodě.")
+    entries = [e for t in TEXTS for e in t.entries.values()][:3]
+    cause = errata.Cause("zeta-branch", "t", errata.Kind.RANGE, 0,
+                         M({"": "The branch of the root", "cs": "Větev odmocniny"}),
+                         M({"": "Holds on the first half-period only.", "cs": "Platí jen na první půlperiodě."}))
 
     def step(e, causes):
-        err = NS(id=e.id, kind="range of validity", note="n", corrected_latex="x = 1", causes=causes)
-        return report.Step(e, Outcome(e.id, Refuted(Method.NUMERIC), "erratum", True), None, None, "none", err, None)
+        err = errata.Erratum(e.id, errata.Kind.RANGE, "x", "x = 1", M({"": "n"}), tuple(c.id for c in causes))
+        outcome = Outcome(e.id, Refuted(Method.NUMERIC), Status.ERRATUM, True, records=EntryRecords(err, None, causes))
+        return steps_mod.Step(e, outcome, None, None, None)
 
     steps = [step(entries[0], (cause,)), step(entries[1], (cause,)), step(entries[2], ())]
-    groups = report.cause_groups(steps)
+    groups = steps_mod.cause_groups(steps)
     assert [len(g.steps) for g in groups] == [2, 1] and groups[0].recorded and not groups[1].recorded
     by_id = {s.entry.id: s for s in steps}
     for lang, title, note in (("en", "The branch of the root", "first half-period"), ("cs", "Větev odmocniny", "půlperiodě")):
-        tex = report._causes_section(groups, by_id, generic_prose("t"), lang)
+        tex = derivation_report._causes_section(groups, by_id, generic_prose("t"), lang)
         assert tex.count(title) == 1 and tex.count(note) == 1
         assert f"\\ref{{e:{steps[0].label}}}" in tex and f"\\ref{{e:{steps[1].label}}}" in tex

@@ -12,8 +12,11 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from quasicentral.engine import registry, texts
+from quasicentral.engine import registry
+from quasicentral.engine.registry import Derivations
 from quasicentral.engine.store import STORE_FOLDER, DerivedStore
+from quasicentral.engine.workspace import Workspace
+from quasicentral.notation.domain import Domain
 from quasicentral.engine.workers import map_grouped, preference_orders
 
 
@@ -22,58 +25,54 @@ from quasicentral.engine.workers import map_grouped, preference_orders
 def cache(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
     yield tmp_path / "cache" / STORE_FOLDER
-    texts.reset()
 
 
-def _open(folder: Path) -> texts.Text:
-    texts.reset()
-    return texts.activate([texts.open_text(folder)])[0]
+def _open(folder: Path, read_kept: bool = True) -> Workspace:
+    """The text in a new workspace, as a new process would open it: nothing in memory."""
+    ws = Workspace(read_kept=read_kept)
+    ws.load([ws.open(folder)])
+    return ws
 
 
-def _never(eid: str):
+def _never(ws: Workspace, eid: str):
     """Replace the derivation of ``eid`` by one that must not run."""
     def boom():
         """Must not be computed: the kept result is read back."""
         raise AssertionError(f"{eid} was computed again")
-    registry.REGISTRY[eid] = dataclasses.replace(registry.REGISTRY[eid], func=boom)
-
+    ws.derivations.by_id[eid] = dataclasses.replace(ws.derivations.by_id[eid], func=boom)
 
 
 def test_a_result_is_kept_and_read_back_with_what_it_used(kepler, cache):
-    _open(kepler)
-    first = registry.derived("kepler:2")
+    first = _open(kepler).result("kepler:2")
     assert len(list(cache.glob("*.pickle"))) == 2  # kepler:2 and the kepler:1 it builds on
-    _open(kepler)  # as a new process would: the derivations imported anew, nothing in memory
-    _never("kepler:2")
-    _never("kepler:1")
-    assert registry.derived("kepler:2") == first
-    assert registry.actually_used("kepler:2") == {"kepler:1"}
+    ws = _open(kepler)  # as a new process would: the derivations imported anew, nothing in memory
+    _never(ws, "kepler:2")
+    _never(ws, "kepler:1")
+    assert ws.result("kepler:2") == first
+    assert ws.used("kepler:2") == {"kepler:1"}
 
 
 def test_an_edited_text_is_derived_anew(kepler, cache):
-    _open(kepler)
-    registry.derived("kepler:3")
+    _open(kepler).result("kepler:3")
     orbit = kepler / "orbit.py"
     orbit.write_text(orbit.read_text().replace("T² = 4π²a³/(GM).", "T² = 4π²a³/(GM), edited."))
-    _open(kepler)
-    _never("kepler:3")
+    ws = _open(kepler)
+    _never(ws, "kepler:3")
     with pytest.raises(AssertionError, match="computed again"):
-        registry.derived("kepler:3")
+        ws.result("kepler:3")
 
 
 def test_a_cold_run_derives_anew_and_keeps(kepler, cache):
-    _open(kepler)
-    registry.derived("kepler:3")
-    _open(kepler)
-    _never("kepler:3")
-    with registry.reading_kept(False), pytest.raises(AssertionError, match="computed again"):
-        registry.derived("kepler:3")
+    _open(kepler).result("kepler:3")
+    ws = _open(kepler, read_kept=False)
+    _never(ws, "kepler:3")
+    with pytest.raises(AssertionError, match="computed again"):
+        ws.result("kepler:3")
 
 
 @pytest.mark.parametrize("spoil", ["garbage", "group-writable", "symlink"])
 def test_a_record_not_safe_to_load_is_computed_anew(kepler, cache, spoil):
-    _open(kepler)
-    registry.derived("kepler:3")
+    _open(kepler).result("kepler:3")
     (record,) = cache.glob("*.pickle")
     if spoil == "garbage":
         record.write_bytes(b"\x80\x05not a pickle")
@@ -83,16 +82,16 @@ def test_a_record_not_safe_to_load_is_computed_anew(kepler, cache, spoil):
         target = record.with_suffix(".elsewhere")
         record.rename(target)
         record.symlink_to(target)
-    _open(kepler)
-    _never("kepler:3")
+    ws = _open(kepler)
+    _never(ws, "kepler:3")
     with pytest.raises(AssertionError, match="computed again"):  # not read: computed, no other error
-        registry.derived("kepler:3")
+        ws.result("kepler:3")
 
 
 def test_the_store_keeps_only_what_it_can_tell_apart(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
     prints = {"t": "fp-t", "u": "fp-u"}
-    store = DerivedStore(prints.get, frozenset({"mod"}))
+    store = DerivedStore(prints.get, lambda: frozenset({"mod"}))
     assert store.keeps("mod.steps") and not store.keeps("other.steps")
     store.save("t:1", "mod.steps", sp.Eq(sp.Dummy("x"), 1), (), ())  # another process could make an equal dummy
     store.save("t:3", "mod.steps", sp.Matrix([[sp.Dummy("y")]]), (), ())
@@ -101,8 +100,8 @@ def test_the_store_keeps_only_what_it_can_tell_apart(tmp_path, monkeypatch):
     store.save("t:2", "mod.steps", {x: sp.sqrt(x)}, ["u:1"], {"t", "u"})
     assert store.load("t:2", "mod.steps") == ({x: sp.sqrt(x)}, frozenset({"u:1"}), frozenset({"u"}))
     assert store.load("t:2", "copy.steps") is None  # a copy of the text under another module name
-    assert DerivedStore({"t": "fp-t", "u": "fp-u, edited"}.get, frozenset()).load("t:2", "mod.steps") is None
-    assert DerivedStore({"t": "fp-t, edited", "u": "fp-u"}.get, frozenset()).load("t:2", "mod.steps") is None
+    assert DerivedStore({"t": "fp-t", "u": "fp-u, edited"}.get, frozenset).load("t:2", "mod.steps") is None
+    assert DerivedStore({"t": "fp-t, edited", "u": "fp-u"}.get, frozenset).load("t:2", "mod.steps") is None
     (tmp_path / STORE_FOLDER).chmod(0o777)  # a folder others may write: nothing in it is loaded
     assert store.load("t:2", "mod.steps") is None
     (tmp_path / STORE_FOLDER).chmod(0o700)
@@ -111,7 +110,7 @@ def test_the_store_keeps_only_what_it_can_tell_apart(tmp_path, monkeypatch):
 
 def test_a_record_is_a_plain_pickle_of_value_uses_and_other_texts(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
-    store = DerivedStore({"t": "fp-t", "u": "fp-u"}.get, frozenset())
+    store = DerivedStore({"t": "fp-t", "u": "fp-u"}.get, frozenset)
     store.save("t:1", "m.s", sp.Integer(3), ["u:1"], ["t", "u"])
     (record,) = (tmp_path / STORE_FOLDER).glob("*.pickle")
     assert pickle.loads(record.read_bytes()) == (3, ["u:1"], {"u": "fp-u"})
@@ -124,9 +123,8 @@ def test_a_result_read_back_passes_on_the_texts_it_was_built_on(tmp_path, monkey
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
     value_of_d = [1]
 
-    def register():
-        registry.unregister("t")
-        registry.unregister("u")
+    def new_process(fingerprints) -> Derivations:
+        ds = Derivations(DerivedStore(fingerprints.get, lambda: frozenset({"fake_t", "fake_u"})))
         steps = {"u:D": lambda: sp.Integer(value_of_d[0]),
                  "t:C": lambda: registry.derived("u:D"),
                  "t:B": lambda: registry.derived("t:C") + 1,
@@ -135,26 +133,16 @@ def test_a_result_read_back_passes_on_the_texts_it_was_built_on(tmp_path, monkey
             def step(body=body):
                 """One step of the chain."""
                 return body()
-            step.__module__ = f"fake_{eid[0]}.steps"
-            registry.derives(eid)(step)
+            ds.add(registry.Derivation(eid, step, registry.Mode.SOLVE, Domain(), (), None, "One step.",
+                                       f"fake_{eid[0]}.steps"))
+        return ds
 
-    def new_process(fingerprints):
-        register()
-        registry.use_store(DerivedStore(fingerprints.get, frozenset({"fake_t", "fake_u"})))
+    assert new_process({"t": "t1", "u": "u1"}).result("t:B") == 2  # process 1: B (and C, D) kept
+    assert new_process({"t": "t1", "u": "u1"}).result("t:A") == 3  # process 2: B read back, A computed and kept
+    value_of_d[0] = 100
+    assert new_process({"t": "t1", "u": "u2"}).result("t:A") == 102  # process 3: the text u was edited
 
-    before = registry.use_store(None)
-    try:
-        new_process({"t": "t1", "u": "u1"})
-        assert registry.derived("t:B") == 2  # process 1: B (and C, D) kept
-        new_process({"t": "t1", "u": "u1"})
-        assert registry.derived("t:A") == 3  # process 2: B read back, A computed and kept
-        value_of_d[0] = 100
-        new_process({"t": "t1", "u": "u2"})  # process 3: the text u was edited
-        assert registry.derived("t:A") == 102
-    finally:
-        registry.unregister("t")
-        registry.unregister("u")
-        registry.use_store(before)
+
 # --- the grouped pool ------------------------------------------------------------------------
 def test_each_worker_keeps_to_its_groups_then_takes_the_others_from_their_ends():
     orders = preference_orders([[0, 1, 2, 3], [4, 5], [6]], 2)

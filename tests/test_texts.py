@@ -9,8 +9,9 @@ from pathlib import Path
 import pytest
 
 from quasicentral import cli
-from quasicentral.engine import run, texts
+from quasicentral.engine import run
 from quasicentral.engine.checker import Options
+from quasicentral.engine.workspace import Workspace
 
 
 
@@ -18,7 +19,6 @@ from quasicentral.engine.checker import Options
 def _isolated(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
     yield
-    texts.reset()
 
 
 
@@ -120,7 +120,7 @@ MISTAKES = {
                       "orbit.py:9: ZeroDivisionError"),
     "undeclared in the module": (lambda k: _edit(k / "orbit.py", 'S("theta G M h e p a T u r")',
                                                  'S("theta G M h e p a T u r w")'), "no symbol 'w'"),
-    "bad symbol table": (lambda k: _edit(k / "text.toml", 'dimension = "L^2/T"', 'dimension = "metre"'),
+    "bad symbol table": (lambda k: _edit(k / "text.toml", 'dimension = "L^2/T"', 'dimension = "bananas"'),
                          "text.toml:"),
     "bad errata kind": (lambda k: _edit(k / "errata" / "orbit.toml", 'kind = "sign"', 'kind = "typo"'),
                         "unknown kind"),
@@ -155,11 +155,11 @@ def test_the_cache_follows_the_texts_files(kepler, tmp_path, capsys):
     assert _run(["verify", "--text", str(kepler), "--text", str(other)], capsys)[0] == 0
     _edit(kepler / "orbit.py", "return sp.Eq(T**2, sp.simplify(period**2))",
           "return sp.Eq(T**2, sp.simplify(2 * period**2))")
-    texts.reset()
     seen = []
-    selected = texts.activate(texts.resolve([str(kepler), str(other)]))
-    outcomes = run.run(texts.entries(selected), Options(), progress=seen.append)
-    assert seen[0].cached == len(texts.get("other").entries) == 2  # the other text's verdicts stand
+    ws = Workspace()
+    selected = ws.resolve([str(kepler), str(other)])
+    outcomes = run.run(ws, [e for t in selected for e in t.entries.values()], Options(), progress=seen.append)
+    assert seen[0].cached == len(ws.text("other").entries) == 2  # the other text's verdicts stand
     assert seen[0].total == len(outcomes) > 2
     by_id = {o.id: o for o in outcomes}
     assert not by_id["kepler:3"].ok  # the edited derivation no longer supports the correction

@@ -7,15 +7,16 @@ entry becomes unreadable without a recorded reason, and when a recorded entry be
 (the record is stale).
 """
 
+import shipped
 import tomllib
 from pathlib import Path
 
 import pytest
 
-from quasicentral.engine import latexparse, texts
+from quasicentral.engine import latexparse
 
 UNREAD = tomllib.loads((Path(__file__).parent / "data" / "latex-unread.toml").read_text(encoding="utf-8"))["unread"]
-IDS = [e.id for e in texts.entries(texts.shipped())]
+IDS = [e.id for t in shipped.workspace().shipped() for e in t.entries.values()]
 
 
 def _reads(entry) -> bool:
@@ -25,7 +26,7 @@ def _reads(entry) -> bool:
 @pytest.mark.parametrize("eid", [i for i in IDS if i not in UNREAD])
 def test_transcription_agrees_with_its_latex(eid):
     """The entries the parsers read: the parse equals the transcription at random points."""
-    assert _reads(texts.entry(eid)), "the LaTeX parse disagrees with the transcription (or cannot be read): " \
+    assert _reads(shipped.entry(eid)), "the LaTeX parse disagrees with the transcription (or cannot be read): " \
                                      "fix the transcription, or record why the parsers cannot read it"
 
 
@@ -39,7 +40,7 @@ def test_unread_entries_say_why(eid):
 def test_unread_entries_are_still_unreadable(eid):
     """(slow: ~4 min for both parsers over the unread entries) a recorded entry the parsers now
     read is a stale record."""
-    assert not _reads(texts.entry(eid)), "the parsers now read this entry: drop it from latex-unread.toml"
+    assert not _reads(shipped.entry(eid)), "the parsers now read this entry: drop it from latex-unread.toml"
 
 
 def test_every_recorded_entry_exists():

@@ -1,6 +1,7 @@
 """What a reader relies on: errata by root cause, the text's own branch, guaranteed witness
 digits, notes that quote their witness, a checked cache, and guards that bite."""
 
+import shipped
 import json
 import re
 from dataclasses import replace
@@ -10,17 +11,19 @@ import mpmath
 import pytest
 import sympy as sp
 
-from quasicentral.engine import errata, run, texts
+from quasicentral.engine import errata, notes, run
 from quasicentral.engine.catalog import CatalogError
-from quasicentral.engine.checker import Options, check, claims_for, round_significant
-from quasicentral.engine.registry import REGISTRY, derived
+from quasicentral.engine.checker import Options, claims_for
+from quasicentral.engine.witness import round_significant
+from shipped import check, derived
 from quasicentral.engine.verdict import Refuted
 from quasicentral.notation import bridge
 from quasicentral.notation.domain import Domain, substitute_definitions
 
-ERRATA, CLEARED = texts.records(texts.shipped())
-CAUSES = texts.causes(texts.shipped())
-BREPTA = texts.get("brepta1953").records
+ERRATA, CLEARED = shipped.records()
+CAUSES = {cid: c for t in shipped.workspace().shipped() for cid, c in t.causes.items()}
+BREPTA = shipped.text("brepta1953").records
+WS = shipped.workspace()
 ZETA = ["B-integral-zeta", "B-integral-denominator", "B-split", "B-split-limits", "B-reduced", "B-final",
         "C-integral-zeta", "C-split-limits", "C-final", "28", "30", "particular-solution"]
 BRANCH = ["pendulum:51", "pendulum:51-repeated", "pendulum:separated-velocity", "pendulum:52"]
@@ -28,7 +31,7 @@ BRANCH = ["pendulum:51", "pendulum:51-repeated", "pendulum:separated-velocity", 
 
 # --- 1. root causes -------------------------------------------------------------------------
 def test_every_erratum_names_known_causes_of_its_text():
-    for t in texts.shipped():
+    for t in WS.shipped():
         for rec in t.errata.values():
             assert rec.causes
             for c in rec.causes:
@@ -69,7 +72,7 @@ corrected_latex = "x"
 note = "n"
 '''
     (tmp_path / "x.toml").write_text(text, encoding="utf-8")
-    pendulum = texts.get("pendulum")
+    pendulum = shipped.text("pendulum")
     with pytest.raises(CatalogError, match=message):
         errata.load([tmp_path / "x.toml"], pendulum.entries, pendulum.symbols, pendulum.id)
 
@@ -103,12 +106,11 @@ def test_branch_is_cleared_on_the_rising_quarter(eid, outcomes):
 def test_the_plus_root_fails_on_the_descending_half_swing(eid):
     """The branch matters: on the descending half-swing (0 < Ωt < 2K) the printed + root is
     refuted, so clearing it names the branch it holds on."""
-    texts.activate(texts.shipped())
-    from derivations.pendulum.exact_period import _K
+    _K = shipped.module("pendulum", "exact_period")._K
 
-    e = texts.entry(eid)
+    e = shipped.entry(eid)
     Omega, t = e.symbols("Omega t")
-    der = replace(REGISTRY[eid], domain=Domain.of(ranges={t: (_K / 4 / Omega, 7 * _K / 4 / Omega)}))
+    der = replace(shipped.derivation(eid), domain=Domain.of(ranges={t: (_K / 4 / Omega, 7 * _K / 4 / Omega)}))
     v = check(e.relations(), e.dims, der, eid, Options(points=8, symbolic=False, certify=False), e.symbols)
     assert isinstance(v, Refuted)
 
@@ -123,10 +125,9 @@ def test_round_significant_is_exact():
 
 
 def _sides(eid, w):
-    texts.activate(texts.shipped())
-    der = REGISTRY[eid]
-    defs = der.domain.definition_map(texts.entry(eid).symbols)
-    for claim in claims_for(texts.entry(eid).relations(), der, derived(eid)):
+    der = shipped.derivation(eid)
+    defs = der.domain.definition_map(shipped.entry(eid).symbols)
+    for claim in claims_for(shipped.entry(eid).relations(), der, derived(eid)):
         if claim.quantity != w.quantity:
             continue
         p = bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(claim.printed, defs)))
@@ -193,51 +194,51 @@ def test_erratum_and_cause_notes_quote_no_literal_numbers():
 @pytest.mark.parametrize("eid", sorted(ERRATA))
 def test_rendered_notes_quote_the_witness(eid, outcomes):
     w = getattr(outcomes[eid].verdict, "witness", None)
-    text = errata.render_note(ERRATA[eid].note, w)
+    text = notes.render_note(ERRATA[eid].note, w)
     assert "{witness" not in text
     if w is not None and "{witness" in ERRATA[eid].note:
         assert w.printed in text or w.corrected in text
     # every decimal the rendered note quotes is one of the witness's own numbers
     allowed = set() if w is None else {w.printed, w.corrected, w.relative_difference,
-                                        *errata.witness_parameters_text(w).values()}
+                                        *notes.parameters_text(w).values()}
     for num in NUMBER.findall(text):
         assert any(num.replace("−", "-") in a for a in allowed), num
 
 
 def test_unknown_placeholder_is_refused():
     with pytest.raises(CatalogError):
-        errata._check_placeholders("see {witness.nonsense}", "here")
+        errata.check_placeholders("see {witness.nonsense}", "here")
 
 
 # --- 6. the cache is checked, not trusted ------------------------------------------------------
 def test_cache_contradicting_the_registry_is_recomputed(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
-    entries = [texts.entry("pendulum:equation-of-motion")]
+    entries = [shipped.entry("pendulum:equation-of-motion")]
     opts = Options(points=6, symbolic=False)
-    first = run.run(entries, opts, jobs=1)
+    first = run.run(WS, entries, opts, jobs=1)
     assert first[0].status == "erratum"
     (f,) = list(tmp_path.glob("*.json"))
     d = json.loads(f.read_text())
-    d["status"] = "verified"
+    d["outcome"]["status"] = "verified"
     f.write_text(json.dumps(d))
     said = []
-    again = run.run(entries, opts, jobs=1, on_warning=said.append)
+    again = run.run(WS, entries, opts, jobs=1, on_warning=said.append)
     assert again[0].status == "erratum"
     assert len(said) == 1 and "contradicts the errata registry" in said[0]
     # the recomputed verdict replaced the bad one
-    assert json.loads(f.read_text())["status"] == "erratum"
+    assert json.loads(f.read_text())["outcome"]["status"] == "erratum"
 
 
 @pytest.mark.parametrize("junk", ['{"foo": 1}', "[1, 2]", '{"id": "pendulum:55"}', "not json"])
 def test_cache_of_the_wrong_shape_is_recomputed(tmp_path, monkeypatch, junk):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path))
-    entries = [texts.entry("pendulum:55")]
+    entries = [shipped.entry("pendulum:55")]
     opts = Options(points=6, symbolic=False)
-    assert run.run(entries, opts, jobs=1)[0].status == "verified"
+    assert run.run(WS, entries, opts, jobs=1)[0].status == "verified"
     (f,) = list(tmp_path.glob("*.json"))
     f.write_text(junk)
     said = []
-    assert run.run(entries, opts, jobs=1, on_warning=said.append)[0].status == "verified"
+    assert run.run(WS, entries, opts, jobs=1, on_warning=said.append)[0].status == "verified"
     assert len(said) == 1
 
 
@@ -257,7 +258,7 @@ def test_cli_prints_one_line_for_a_discarded_cache_entry(tmp_path, monkeypatch, 
 # --- 7. the guards bite -------------------------------------------------------------------------
 def _with_registry(monkeypatch, errs, cleared):
     """A deliberately wrong registry for the text of the entries tested (pendulum)."""
-    text = texts.get("pendulum")
+    text = shipped.text("pendulum")
     monkeypatch.setattr(text, "records", errata.Records(errs, cleared, text.causes))
 
 
@@ -266,38 +267,38 @@ FAST = Options(points=6, symbolic=False, certify=False)
 
 def test_guard_registered_erratum_must_be_refuted(monkeypatch):
     """An erratum registered for an entry whose print is right does not stand."""
-    e = texts.entry("pendulum:55")
-    fake = errata.Erratum(e.id, "sign", e.printed_text, e.latex, "n", ("c",), symbols=e.symbols)
+    e = shipped.entry("pendulum:55")
+    fake = errata.Erratum(e.id, errata.Kind.SIGN, e.printed_text, e.latex, {"": "n"}, ("c",), symbols=e.symbols)
     _with_registry(monkeypatch, {e.id: fake}, {})
-    o = run.verify_entry(e, FAST)
-    assert o.status == "unexpected" and "not refuted" in o.problems[0]
+    o = run.verify_entry(WS, e, FAST)
+    assert o.status == "unexpected" and "not refuted" in o.problem_texts[0]
 
 
 def test_guard_the_correction_must_verify(monkeypatch):
-    e = texts.entry("pendulum:equation-of-motion")
-    fake = errata.Erratum(e.id, "derivative order", e.printed_text, e.latex, "n", ("c",),
+    e = shipped.entry("pendulum:equation-of-motion")
+    fake = errata.Erratum(e.id, errata.Kind.DERIVATIVE_ORDER, e.printed_text, e.latex, {"": "n"}, ("c",),
                           symbols=e.symbols)  # "corrects" to the print
     _with_registry(monkeypatch, {e.id: fake}, {})
-    o = run.verify_entry(e, FAST)
-    assert o.status == "unexpected" and any("corrected form is refuted" in p for p in o.problems)
+    o = run.verify_entry(WS, e, FAST)
+    assert o.status == "unexpected" and any("corrected form is refuted" in p for p in o.problem_texts)
 
 
 def test_guard_a_cleared_suspect_must_verify(monkeypatch):
-    e = texts.entry("pendulum:equation-of-motion")
-    _with_registry(monkeypatch, {}, {e.id: errata.Cleared(e.id, "s", "n")})
-    o = run.verify_entry(e, FAST)
-    assert o.status == "unexpected" and "cleared suspect is refuted" in o.problems[0]
+    e = shipped.entry("pendulum:equation-of-motion")
+    _with_registry(monkeypatch, {}, {e.id: errata.Cleared(e.id, "s", {"": "n"})})
+    o = run.verify_entry(WS, e, FAST)
+    assert o.status == "unexpected" and "cleared suspect is refuted" in o.problem_texts[0]
 
 
 def test_guard_an_unregistered_refutation_is_unexpected(monkeypatch):
-    e = texts.entry("pendulum:equation-of-motion")
+    e = shipped.entry("pendulum:equation-of-motion")
     _with_registry(monkeypatch, {}, {})
-    assert run.verify_entry(e, FAST).status == "unexpected"
+    assert run.verify_entry(WS, e, FAST).status == "unexpected"
 
 
 def test_the_true_registry_passes_the_same_entries():
     for eid, status in (("pendulum:55", "verified"), ("pendulum:equation-of-motion", "erratum")):
-        assert run.verify_entry(texts.entry(eid), FAST).status == status
+        assert run.verify_entry(WS, shipped.entry(eid), FAST).status == status
 
 
 # --- the double-precision series (66), pinned term by term --------------------------------------

@@ -1,20 +1,18 @@
 """Printed against derived, for every catalog entry (ids are the equation labels)."""
 
+import shipped
 import mpmath
 import pytest
 import sympy as sp
 
-from quasicentral.engine import texts
 from quasicentral.notation import bridge
-
-
 from quasicentral.engine.checker import claims_for
 from quasicentral.notation.domain import substitute_definitions
-from quasicentral.engine.registry import REGISTRY, derived
 from quasicentral.engine.verdict import Method, Refuted, Verified
+from shipped import derived
 
-IDS = [e.id for e in texts.entries(texts.shipped())]
-ERRATA, CLEARED = texts.records(texts.shipped())
+IDS = [e.id for t in shipped.workspace().shipped() for e in t.entries.values()]
+ERRATA, CLEARED = shipped.records()
 
 
 @pytest.mark.parametrize("eid", IDS)
@@ -41,10 +39,9 @@ def test_witness_reproduces(eid, outcomes):
     if w is None:
         assert outcomes[eid].verdict.method is Method.DIMENSIONAL
         return
-    texts.activate(texts.shipped())
-    der = REGISTRY[eid]
-    defs = der.domain.definition_map(texts.entry(eid).symbols)
-    for claim in claims_for(texts.entry(eid).relations(), der, derived(eid)):
+    der = shipped.derivation(eid)
+    defs = der.domain.definition_map(shipped.entry(eid).symbols)
+    for claim in claims_for(shipped.entry(eid).relations(), der, derived(eid)):
         if claim.quantity != w.quantity:
             continue
         p = bridge.to_jets(substitute_definitions(claim.printed, defs))

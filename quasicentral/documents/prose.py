@@ -414,13 +414,6 @@ def load_prose(root: Path, text_id: str | None = None, title: str | None = None)
 REPORT_FILE = "report.toml"
 
 
-def text_root(text_id: str) -> Path:
-    """The folder of the loaded text ``text_id``."""
-    from quasicentral.engine import texts
-
-    return texts.get(text_id).root
-
-
 @lru_cache(maxsize=None)
 def _prose_cached(root: str, text_id: str, title: str | None) -> TextProse:
     return load_prose(Path(root), text_id, title)
@@ -428,12 +421,7 @@ def _prose_cached(root: str, text_id: str, title: str | None) -> TextProse:
 
 def prose_of(text) -> TextProse:
     """The prose of ``text``: a Text-like object (``.root``, ``.id``, optionally ``.title``),
-    a folder, or a shipped text's id."""
-    if isinstance(text, str):
-        from quasicentral.engine import texts
-
-        loaded = texts.get(text)
-        return _prose_cached(str(loaded.root), loaded.id, loaded.title)
+    or a folder."""
     if isinstance(text, Path):
         return _prose_cached(str(text), text.name, None)
     return _prose_cached(str(text.root), text.id, getattr(text, "title", None))

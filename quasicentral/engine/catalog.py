@@ -1,7 +1,7 @@
 """The catalog of a text: every equation as it was printed, read from ``<text>/catalog/*.toml``.
 
 Each entry keeps the printed LaTeX verbatim and a sympy transcription of exactly what is
-printed, typos included (see ``derivations/FORMAT.md``), read in the text's symbol table.  The
+printed, typos included (see ``quasicentral/texts/FORMAT.md``), read in the text's symbol table.  The
 transcriptions are parsed lazily, their names checked at load; a malformed file raises
 :class:`CatalogError` naming the file and line or the entry.
 """
@@ -15,7 +15,8 @@ from pathlib import Path
 
 import sympy as sp
 
-from quasicentral.notation.symbols import SymbolError, SymbolTable, parse_dim
+from quasicentral.notation.symbols import SymbolError, SymbolTable
+from quasicentral.notation.units import UnitError, parse_dim
 
 
 class CatalogError(ValueError):
@@ -37,16 +38,40 @@ class Entry:
     file: str = ""
     order: int = 0
     symbols: SymbolTable | None = field(default=None, compare=False, repr=False)
+    constraints_text: tuple[str, ...] = ()  # the entry's stated constraints (transcription syntax)
+    real_names: tuple[str, ...] = ()  # symbols drawn on the real line in this entry
+    url: str = ""
+    kind: str = ""  # identity | definition | inequality | series | asymptotic | notation ("" = not said)
+    semantic: str = ""  # the semantic LaTeX the entry was read from, if any
+    approx: str = ""  # a printed rounding of the entry's value ("4.965114")
+    path: str = ""  # the catalog file's full path, for messages
 
-    @property
-    def text(self) -> str:
-        """The id of the text the entry belongs to."""
-        return self.source
+    @cached_property
+    def constraints(self) -> tuple:
+        """The stated constraints, parsed (sympy relations)."""
+        return tuple(parse_transcription(c, self.symbols, f"{self._where(c)}: {self.id}: constraints")
+                     for c in self.constraints_text)
+
+    @cached_property
+    def real(self) -> tuple:
+        return tuple(symbol_named(self.symbols, n) for n in self.real_names)
 
     @cached_property
     def printed(self) -> sp.Basic:
         """The transcription, parsed: an ``Eq``, a bare expression, or a ``Tuple`` of them."""
-        return parse_transcription(self.printed_text, self.symbols, f"{self.file}: {self.id}")
+        return parse_transcription(self.printed_text, self.symbols, f"{self._where(self.printed_text)}: {self.id}")
+
+    def _where(self, text: str) -> str:
+        """``file:line`` of the first line of ``text`` in the entry's catalog file."""
+        first = text.strip().splitlines()[0] if text.strip() else None
+        return where(Path(self.path), first) if self.path and first else (self.path or self.file)
+
+    def validate(self) -> None:
+        """Read everything the entry holds (its transcription and constraints), so that a
+        mistake is named now, with its file and line."""
+        self.printed
+        self.constraints
+        self.dims
 
     @cached_property
     def dims(self) -> dict[sp.Basic, sp.Expr]:
@@ -70,7 +95,8 @@ def parse_transcription(text: str, table: SymbolTable, where: str) -> sp.Basic:
     try:
         out = table.parse(text)
     except Exception as exc:  # noqa: BLE001 - any parse failure is a malformed catalog
-        raise CatalogError(f"{where}: cannot read transcription {text!r}: {exc}") from None
+        shown = text if len(text) <= 120 else text[:117] + "..."
+        raise CatalogError(f"{where}: cannot read transcription {shown!r}: {exc}") from None
     if isinstance(out, list):
         out = sp.Tuple(*out)
     return out
@@ -92,22 +118,52 @@ def where(path: Path, needle: str | None = None) -> str:
     return f"{path}:{line}" if line else str(path)
 
 
+MAX_FILE_BYTES = 4 * 2**20  # a text's TOML file is typed by hand: more is not a text
+
+
+def read_bytes(path: Path, limit: int = MAX_FILE_BYTES) -> bytes:
+    """A text's file, refused unless it is a regular file (not a pipe or a device, where a read
+    would block or never end) of at most ``limit`` bytes."""
+    import os
+    import stat
+
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+    except OSError as exc:
+        raise CatalogError(f"{path}: cannot read: {exc.strerror}") from None
+    with os.fdopen(fd, "rb") as fh:
+        st = os.fstat(fh.fileno())
+        if not stat.S_ISREG(st.st_mode):
+            raise CatalogError(f"{path}: not a regular file (a pipe, a device or a folder): refused")
+        if st.st_size > limit:
+            raise CatalogError(f"{path}: {st.st_size} bytes; a text's file is at most {limit} bytes")
+        data = fh.read(limit + 1)
+    if len(data) > limit:
+        raise CatalogError(f"{path}: more than {limit} bytes; a text's file is at most {limit} bytes")
+    return data
+
+
 def read_toml(path: Path) -> dict:
     """A text's TOML file; a syntax error names the file and line."""
-    try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as exc:
-        import re
+    import re
 
+    data = read_bytes(path)
+    try:
+        return tomllib.loads(data.decode("utf-8"))
+    except tomllib.TOMLDecodeError as exc:
         m = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
         msg = re.sub(r"\s*\(at line \d+, column \d+\)", "", str(exc))
         raise CatalogError(f"{path}:{m.group(1)}: {msg}" if m else f"{path}: {msg}") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise CatalogError(f"{path}: cannot read: {getattr(exc, 'strerror', None) or exc}") from None
+    except UnicodeDecodeError as exc:
+        raise CatalogError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    except RecursionError:
+        raise CatalogError(f"{path}: arrays or tables nested too deeply to be a text's data") from None
 
 
 _REQUIRED = ("id", "name", "latex", "printed")
-_KNOWN = set(_REQUIRED) | {"number", "dims", "note"}
+_KNOWN = set(_REQUIRED) | {"number", "dims", "note", "constraints", "real", "url", "kind", "semantic", "approx",
+                           "rests_on"}
+KINDS = ("identity", "definition", "inequality", "series", "asymptotic", "notation")
 
 
 def load_file(path: Path, text_id: str, table: SymbolTable, order0: int = 0) -> list[Entry]:
@@ -115,39 +171,72 @@ def load_file(path: Path, text_id: str, table: SymbolTable, order0: int = 0) -> 
     data = read_toml(path)
     if "section" not in data:
         raise CatalogError(f"{path}: missing top-level key 'section'")
+    if not isinstance(data["section"], (str, int)) or isinstance(data["section"], bool):
+        raise CatalogError(f"{where(path, 'section')}: section is a string such as \"2\"")
+    if "title" in data and not isinstance(data["title"], str):
+        raise CatalogError(f"{where(path, 'title')}: title is a string")
     if data.get("source", text_id) != text_id:
         raise CatalogError(f"{where(path, 'source')}: source {data['source']!r} is not this text's id {text_id!r}")
     equations = data.get("equation", [])
-    if not isinstance(equations, list):
-        raise CatalogError(f"{where(path, 'equation')}: write each entry as [[equation]]")
-    entries = []
-    for i, raw in enumerate(equations):
-        missing = [k for k in _REQUIRED if k not in raw]
-        here = where(path, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(path)
-        if missing:
-            raise CatalogError(f"{here}: equation #{i + 1} lacks {', '.join(missing)}")
-        if not all(isinstance(raw[k], str) for k in _REQUIRED):
-            raise CatalogError(f"{here}: id, name, latex and printed are strings")
-        unknown = set(raw) - _KNOWN
-        if unknown:
-            raise CatalogError(f"{here}: {raw['id']}: unknown key(s) {', '.join(sorted(unknown))}")
-        if not raw["id"].startswith(text_id + ":"):
-            raise CatalogError(f"{here}: id {raw['id']!r} does not start with {text_id}:")
-        dims = raw.get("dims", {})
-        if not isinstance(dims, dict):
-            raise CatalogError(f"{here}: {raw['id']}: dims is a table such as {{ A = \"L^2/T\" }}")
-        try:
-            for text in dims.values():
-                parse_dim(str(text))
-            table.check_names(raw["printed"])
-        except SymbolError as exc:
-            raise CatalogError(f"{where(path, raw['printed'].strip().splitlines()[0]) if raw['printed'].strip() else here}: "
-                               f"{raw['id']}: {exc}") from None
-        entries.append(Entry(
-            id=raw["id"], source=text_id, section=str(data["section"]), name=raw["name"],
-            latex=raw["latex"].strip(), printed_text=raw["printed"].strip(),
-            number=str(raw["number"]) if "number" in raw else None,
-            dims_text=tuple(sorted((str(a), str(b)) for a, b in dims.items())),
-            note=raw.get("note", "").strip(), file=path.name, order=order0 + i, symbols=table,
-        ))
-    return entries
+    if not isinstance(equations, list) or not all(isinstance(raw, dict) for raw in equations):
+        raise CatalogError(f"{where(path, 'equation')}: write each entry as an [[equation]] table")
+    return [_entry(raw, i, path, text_id, table, str(data["section"]), order0 + i) for i, raw in enumerate(equations)]
+
+
+def _strings(raw: dict, key: str, here: str) -> tuple[str, ...]:
+    value = raw.get(key, [])
+    if isinstance(value, str):
+        value = [value]
+    if not (isinstance(value, list) and all(isinstance(v, str) for v in value)):
+        raise CatalogError(f"{here}: {key} is a list of strings")
+    return tuple(v.strip() for v in value)
+
+
+def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, section: str, order: int) -> Entry:
+    here = where(path, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(path)
+    missing = [k for k in _REQUIRED if k not in raw]
+    if missing:
+        raise CatalogError(f"{here}: equation #{i + 1} lacks {', '.join(missing)}")
+    if not all(isinstance(raw[k], str) for k in _REQUIRED):
+        raise CatalogError(f"{here}: id, name, latex and printed are strings")
+    unknown = set(raw) - _KNOWN
+    if unknown:
+        raise CatalogError(f"{here}: {raw['id']}: unknown key(s) {', '.join(sorted(unknown))}")
+    eid = raw["id"]
+    if not eid.startswith(text_id + ":") or not _printable(eid):
+        raise CatalogError(f"{here}: id {eid!r} does not start with {text_id}: (or holds control characters)")
+    for key in ("note", "url", "kind", "semantic", "approx"):
+        if key in raw and not isinstance(raw[key], str):
+            raise CatalogError(f"{here}: {eid}: {key} is a string")
+    if "number" in raw and (not isinstance(raw["number"], (str, int)) or isinstance(raw["number"], bool)):
+        raise CatalogError(f"{here}: {eid}: number is a string such as \"12\"")
+    if raw.get("kind", "identity") not in KINDS:
+        raise CatalogError(f"{here}: {eid}: kind is one of {', '.join(KINDS)}")
+    dims = raw.get("dims", {})
+    if not isinstance(dims, dict) or not all(isinstance(v, str) for v in dims.values()):
+        raise CatalogError(f"{here}: {eid}: dims is a table such as {{ A = \"L^2/T\" }}")
+    constraints, real = _strings(raw, "constraints", f"{here}: {eid}"), _strings(raw, "real", f"{here}: {eid}")
+    try:
+        for text in dims.values():
+            parse_dim(text)
+        table.check_names(raw["printed"])
+        for c in constraints:
+            table.check_names(c)
+        for name in real:
+            if name not in table:
+                raise SymbolError(f"real: {name} is not a declared symbol")
+    except (SymbolError, UnitError) as exc:
+        first = raw["printed"].strip().splitlines()[0] if raw["printed"].strip() else None
+        raise CatalogError(f"{where(path, first) if first else here}: {eid}: {exc}") from None
+    return Entry(
+        id=eid, source=text_id, section=section, name=raw["name"],
+        latex=raw["latex"].strip(), printed_text=raw["printed"].strip(),
+        number=str(raw["number"]) if "number" in raw else None,
+        dims_text=tuple(sorted((str(a), str(b)) for a, b in dims.items())),
+        note=raw.get("note", "").strip(), file=path.name, order=order, symbols=table,
+        constraints_text=constraints, real_names=real, url=raw.get("url", "").strip(), kind=raw.get("kind", ""),
+        semantic=raw.get("semantic", "").strip(), approx=raw.get("approx", "").strip(), path=str(path))
+
+
+def _printable(s: str) -> bool:
+    return all(ch.isprintable() for ch in s)

@@ -2,75 +2,154 @@
 
 A text's ``errata/*.toml`` files hold, for each erratum, the corrected transcription (which
 must verify) and its kind; the printed form must be refuted.  Every erratum names its *root
-cause(s)* (``[[cause]]`` tables: ``id``, ``title``, ``title_cs``, ``kind``, ``note``,
-``note_cs``; ids unique across a text): one fault that reaches many displays (a range of
-validity) is one cause, and a display with two faults names both (``cause = ["a", "b"]``).
+cause(s)* (``[[cause]]`` tables: ``id``, ``title``, ``kind``, ``note``, and their wording in
+other languages, ``title_<lang>``, ``note_<lang>``; ids unique across a text): one fault that
+reaches many displays (a range of validity) is one cause, and a display with two faults names
+both (``cause = ["a", "b"]``).
 
 Numbers never appear in a note as literals: a note quotes its witness through placeholders
 (``{witness}``, ``{witness.printed}``, ``{witness.corrected}``, ``{witness.parameters.NAME}``,
-``{witness.relative_difference}``), filled by :func:`render_note` from the witness of the
-current run, so a note cannot drift from the point it describes.  A *cleared* record names a
-suspicion that the checker settled in the text's favour (on the ``branch`` the text states,
-where it names one): the printed form must verify — or, where the entry is an erratum for
-another reason, its correction (which keeps the suspected detail as printed) must verify.  If
-an expectation fails, verification reports the entry as unexpected.
+``{witness.relative_difference}``), filled from the witness of the current run, so a note
+cannot drift from the point it describes.  A *cleared* record names a suspicion that the
+checker settled in the text's favour (on the ``branch`` the text states, where it names one):
+the printed form must verify — or, where the entry is an erratum for another reason, its
+correction (which keeps the suspected detail as printed) must verify.  If an expectation
+fails, verification reports the entry as unexpected.
 """
 
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from enum import Enum
 from functools import cached_property
 from pathlib import Path
+from types import MappingProxyType
 
 import sympy as sp
 
 from quasicentral.engine.catalog import CatalogError, Entry, parse_transcription, read_toml, where
 from quasicentral.notation.symbols import SymbolError, SymbolTable
 
-KINDS = ("sign", "exponent", "wrong variable", "missing factor", "limits of integration",
-         "range of validity", "OCR glyph", "derivative order", "parenthesis", "coefficient")
+
+class Kind(str, Enum):
+    """The kinds of errata."""
+
+    SIGN = "sign"
+    EXPONENT = "exponent"
+    WRONG_VARIABLE = "wrong variable"
+    MISSING_FACTOR = "missing factor"
+    LIMITS = "limits of integration"
+    RANGE = "range of validity"
+    OCR = "OCR glyph"
+    DERIVATIVE_ORDER = "derivative order"
+    PARENTHESIS = "parenthesis"
+    COEFFICIENT = "coefficient"
+
+
+KINDS = tuple(k.value for k in Kind)
+
+
+def _language_keys(raw: dict, base: str) -> dict[str, str]:
+    """``base`` and ``base_<lang>`` of a table: the wording per language ('' for the text's own)."""
+    out = {}
+    for key, value in raw.items():
+        if key == base:
+            out[""] = value
+        elif key.startswith(base + "_") and re.fullmatch(r"[a-z]{2}", key[len(base) + 1:]):
+            out[key[len(base) + 1:]] = value
+    return out
 
 
 @dataclass(frozen=True)
 class Cause:
-    """One root cause: a fault of the text that may reach several displays."""
+    """One root cause: a fault of the text that may reach several displays.  ``titles`` and
+    ``notes`` hold the wording per language ('' is the wording written without a language
+    suffix, in English by convention of the format)."""
 
     id: str
     source: str
-    title: str
-    title_cs: str
-    kind: str
-    note: str
-    note_cs: str
+    kind: Kind
+    order: int = 0  # its place among the text's causes, as the records declare them
+    titles: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+    notes: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+
+    @property
+    def title(self) -> str:
+        return self.titles.get("", "")
+
+    @property
+    def note(self) -> str:
+        return self.notes.get("", "")
+
+    @property
+    def title_cs(self) -> str:
+        return self.titles.get("cs", "")
+
+    @property
+    def note_cs(self) -> str:
+        return self.notes.get("cs", "")
+
+    def title_in(self, lang: str) -> str:
+        """The title in ``lang`` ('' where the records have none in it)."""
+        return self.titles.get(lang, "") or (self.titles.get("", "") if lang == "en" else "")
+
+    def note_in(self, lang: str) -> str:
+        return self.notes.get(lang, "") or (self.notes.get("", "") if lang == "en" else "")
 
 
 @dataclass(frozen=True)
 class Erratum:
     id: str
-    kind: str
+    kind: Kind
     corrected_text: str
     corrected_latex: str
-    note: str
+    notes: MappingProxyType
     causes: tuple[str, ...] = ()
     file: str = ""
     symbols: SymbolTable | None = field(default=None, compare=False, repr=False)
 
+    @property
+    def note(self) -> str:
+        return self.notes.get("", "")
+
+    def note_in(self, lang: str) -> str:
+        return self.notes.get(lang, "") or (self.notes.get("", "") if lang == "en" else "")
+
+    path: str = ""  # the errata file's full path, for messages
+
     @cached_property
     def corrected(self) -> sp.Basic:
-        return parse_transcription(self.corrected_text, self.symbols, f"{self.file}: {self.id}")
+        first = self.corrected_text.strip().splitlines()[0] if self.corrected_text.strip() else None
+        here = where(Path(self.path), first) if self.path and first else self.file
+        return parse_transcription(self.corrected_text, self.symbols, f"{here}: {self.id}: corrected")
 
     def relations(self) -> list[sp.Basic]:
-        c = self.corrected
-        return list(c) if isinstance(c, (sp.Tuple, list, tuple)) else [c]
+        return relations_of(self.corrected)
 
 
 @dataclass(frozen=True)
 class Cleared:
     id: str
     suspicion: str
-    note: str
+    notes: MappingProxyType
     branch: str = ""  # the branch or range the text states, on which the suspect holds
+    suspicions: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+
+    @property
+    def note(self) -> str:
+        return self.notes.get("", "")
+
+    def note_in(self, lang: str) -> str:
+        return self.notes.get(lang, "") or (self.notes.get("", "") if lang == "en" else "")
+
+    def suspicion_in(self, lang: str) -> str:
+        return self.suspicions.get(lang, "") or (self.suspicion if lang == "en" else "")
+
+
+def relations_of(obj) -> list[sp.Basic]:
+    """A transcription's relations: a system (Tuple, list) as its members, one relation alone."""
+    return list(obj) if isinstance(obj, (sp.Tuple, list, tuple)) else [obj]
 
 
 @dataclass(frozen=True)
@@ -103,95 +182,111 @@ def load(paths: list[Path], catalog: dict[str, Entry], table: SymbolTable, text_
     return Records(errata, cleared, causes)
 
 
-_CAUSE_KEYS = ("id", "title", "title_cs", "kind", "note", "note_cs")
+def _tables(data: dict, key: str, p: Path) -> list[dict]:
+    value = data.get(key, [])
+    if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
+        raise CatalogError(f"{where(p, key)}: write each {key} as a [[{key}]] table (double brackets)")
+    return value
+
+
+def _check_strings(raw: dict, keys, here: str, what: str) -> None:
+    for key, value in raw.items():
+        base = key.rsplit("_", 1)[0] if re.fullmatch(r".+_[a-z]{2}", key) else key
+        if (key in keys or base in keys) and not isinstance(value, str):
+            raise CatalogError(f"{here}: {what}: {key} is a string")
+
+
+_CAUSE_KEYS = ("id", "title", "kind", "note")
+_ERRATUM_KEYS = ("id", "kind", "cause", "corrected", "corrected_latex", "note")
+
+
+def _kind(raw: dict, here: str, what: str) -> Kind:
+    try:
+        return Kind(raw["kind"])
+    except ValueError:
+        raise CatalogError(f"{here}: {what}: unknown kind {raw['kind']!r} (one of: {', '.join(KINDS)})") from None
 
 
 def _load_file(p: Path, errata: dict, cleared: dict, causes: dict, catalog: dict[str, Entry], table: SymbolTable,
                text_id: str) -> None:
     data = read_toml(p)
-    for raw in data.get("cause", []):
+    unknown = set(data) - {"cause", "erratum", "cleared"}
+    if unknown:
+        raise CatalogError(f"{where(p, sorted(unknown)[0])}: unknown key(s) {', '.join(sorted(unknown))} "
+                           "(an errata file holds [[cause]], [[erratum]] and [[cleared]] tables)")
+    for raw in _tables(data, "cause", p):
         here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
         missing = [k for k in _CAUSE_KEYS if k not in raw]
         if missing:
             raise CatalogError(f"{here}: cause {raw.get('id', '?')} lacks {', '.join(missing)}")
-        if raw["kind"] not in KINDS:
-            raise CatalogError(f"{here}: cause {raw['id']}: unknown kind {raw['kind']!r} (one of: {', '.join(KINDS)})")
+        _check_strings(raw, ("id", "title", "kind", "note"), here, f"cause {raw.get('id')}")
+        kind = _kind(raw, here, f"cause {raw['id']}")
         if raw["id"] in causes:
             raise CatalogError(f"{here}: duplicate cause {raw['id']!r}")
-        causes[raw["id"]] = Cause(raw["id"], text_id, raw["title"].strip(), raw["title_cs"].strip(), raw["kind"],
-                                  raw["note"].strip(), raw["note_cs"].strip())
-    for raw in data.get("erratum", []):
-        here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
-        missing = [k for k in ("id", "kind", "cause", "corrected", "corrected_latex", "note") if k not in raw]
-        if missing:
-            raise CatalogError(f"{here}: erratum {raw.get('id', '?')} lacks {', '.join(missing)}")
-        if raw["id"] not in catalog:
-            raise CatalogError(f"{here}: erratum for unknown id {raw['id']!r}")
-        if raw["kind"] not in KINDS:
-            raise CatalogError(f"{here}: {raw['id']}: unknown kind {raw['kind']!r} (one of: {', '.join(KINDS)})")
-        if raw["id"] in errata or raw["id"] in cleared:
-            raise CatalogError(f"{here}: duplicate erratum {raw['id']!r}")
-        cause = raw["cause"]
-        if not (isinstance(cause, list) and cause and all(isinstance(c, str) for c in cause)):
-            raise CatalogError(f"{here}: {raw['id']}: 'cause' is a non-empty list of cause ids")
-        try:
-            table.check_names(raw["corrected"])
-        except SymbolError as exc:
-            raise CatalogError(f"{here}: {raw['id']}: corrected: {exc}") from None
-        _check_placeholders(raw["note"], f"{here}: {raw['id']}")
-        errata[raw["id"]] = Erratum(raw["id"], raw["kind"], raw["corrected"].strip(), raw["corrected_latex"].strip(),
-                                    raw["note"].strip(), tuple(cause), p.name, table)
-    for raw in data.get("cleared", []):
-        here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
-        if raw.get("id") not in catalog:
-            raise CatalogError(f"{here}: cleared suspect for unknown id {raw.get('id')!r}")
-        if raw["id"] in cleared:
-            raise CatalogError(f"{here}: {raw['id']!r} cleared twice")
-        if "suspicion" not in raw or "note" not in raw:
-            raise CatalogError(f"{here}: cleared {raw['id']} needs 'suspicion' and 'note'")
-        cleared[raw["id"]] = Cleared(raw["id"], raw["suspicion"].strip(), raw["note"].strip(),
-                                     raw.get("branch", "").strip())
+        causes[raw["id"]] = Cause(raw["id"], text_id, kind, len(causes),
+                                  MappingProxyType({k: v.strip() for k, v in _language_keys(raw, "title").items()}),
+                                  MappingProxyType({k: v.strip() for k, v in _language_keys(raw, "note").items()}))
+    for raw in _tables(data, "erratum", p):
+        _erratum(raw, p, errata, cleared, catalog, table)
+    for raw in _tables(data, "cleared", p):
+        _cleared(raw, p, cleared, catalog, table)
+
+
+def _erratum(raw: dict, p: Path, errata: dict, cleared: dict, catalog: dict, table: SymbolTable) -> None:
+    here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
+    missing = [k for k in _ERRATUM_KEYS if k not in raw]
+    if missing:
+        raise CatalogError(f"{here}: erratum {raw.get('id', '?')} lacks {', '.join(missing)}")
+    _check_strings(raw, ("id", "kind", "corrected", "corrected_latex", "note"), here, f"erratum {raw.get('id')}")
+    if raw["id"] not in catalog:
+        raise CatalogError(f"{here}: erratum for unknown id {raw['id']!r}")
+    kind = _kind(raw, here, raw["id"])
+    if raw["id"] in errata:
+        raise CatalogError(f"{here}: duplicate erratum {raw['id']!r}")
+    cause = raw["cause"]
+    if not (isinstance(cause, list) and cause and all(isinstance(c, str) for c in cause)):
+        raise CatalogError(f"{here}: {raw['id']}: 'cause' is a non-empty list of cause ids")
+    try:
+        table.check_names(raw["corrected"])
+    except SymbolError as exc:
+        raise CatalogError(f"{here}: {raw['id']}: corrected: {exc}") from None
+    notes = {k: v.strip() for k, v in _language_keys(raw, "note").items()}
+    for note in notes.values():
+        check_placeholders(note, f"{here}: {raw['id']}", table)
+    errata[raw["id"]] = Erratum(raw["id"], kind, raw["corrected"].strip(), raw["corrected_latex"].strip(),
+                                MappingProxyType(notes), tuple(cause), p.name, table, str(p))
+
+
+def _cleared(raw: dict, p: Path, cleared: dict, catalog: dict, table: SymbolTable) -> None:
+    here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
+    if raw.get("id") not in catalog:
+        raise CatalogError(f"{here}: cleared suspect for unknown id {raw.get('id')!r}")
+    if raw["id"] in cleared:
+        raise CatalogError(f"{here}: {raw['id']!r} cleared twice")
+    if "suspicion" not in raw or "note" not in raw:
+        raise CatalogError(f"{here}: cleared {raw['id']} needs 'suspicion' and 'note'")
+    _check_strings(raw, ("id", "suspicion", "note", "branch"), here, f"cleared {raw['id']}")
+    notes = {k: v.strip() for k, v in _language_keys(raw, "note").items()}
+    for note in notes.values():
+        check_placeholders(note, f"{here}: {raw['id']}", table)
+    suspicions = {k: v.strip() for k, v in _language_keys(raw, "suspicion").items()}
+    cleared[raw["id"]] = Cleared(raw["id"], raw["suspicion"].strip(), MappingProxyType(notes),
+                                 raw.get("branch", "").strip(), MappingProxyType(suspicions))
 
 
 # --- notes quote their witness --------------------------------------------------------------
 _PLACEHOLDER = re.compile(r"\{witness(?:\.(printed|corrected|relative_difference|quantity|parameters\.[A-Za-z_0-9]+))?\}")
 
 
-def _check_placeholders(note: str, where: str) -> None:
+def check_placeholders(note: str, where: str, table: SymbolTable | None = None) -> None:
+    """Refuse a placeholder the witness cannot fill (a misspelt field, a parameter that is not
+    a declared symbol)."""
     for m in re.finditer(r"\{[^{}]*\}", note):
-        if m.group(0).startswith("{witness") and not _PLACEHOLDER.fullmatch(m.group(0)):
+        if not m.group(0).startswith("{witness"):
+            continue
+        got = _PLACEHOLDER.fullmatch(m.group(0))
+        if not got:
             raise CatalogError(f"{where}: unknown placeholder {m.group(0)}")
-
-
-def witness_parameters_text(w) -> dict[str, str]:
-    """The witness's exact parameters as short decimals (8 significant digits) for prose."""
-    out = {}
-    for k, v in w.parameters.items():
-        val = sp.sympify(v)
-        out[k] = v if val.is_Rational and val.q == 1 else sp.sstr(sp.N(val, 8))
-    return out
-
-
-def witness_sentence(w) -> str:
-    """The witness as one sentence (English), from its record only."""
-    if w is None:
-        return "no numeric witness (the printed relation is dimensionally inconsistent)"
-    at = ", ".join(f"{k} = {v}" for k, v in witness_parameters_text(w).items())
-    cert = "certified" if w.certified else "not certified"
-    return (f"at {at} the printed {w.quantity} is {w.printed}, the derived {w.corrected} "
-            f"(relative difference {w.relative_difference}; {cert})")
-
-
-def render_note(note: str, w) -> str:
-    """``note`` with its ``{witness…}`` placeholders filled from the witness ``w``."""
-    def fill(m: re.Match) -> str:
-        field = m.group(1)
-        if field is None:
-            return witness_sentence(w)
-        if w is None:
-            return "—"
-        if field.startswith("parameters."):
-            return witness_parameters_text(w)[field.split(".", 1)[1]]
-        return str(getattr(w, field))
-
-    return _PLACEHOLDER.sub(fill, note)
+        field_ = got.group(1) or ""
+        if field_.startswith("parameters.") and table is not None and field_.split(".", 1)[1] not in table:
+            raise CatalogError(f"{where}: placeholder {m.group(0)}: {field_.split('.', 1)[1]} is not a declared symbol")

@@ -8,14 +8,13 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from quasicentral.engine import errata as errata_mod
-from quasicentral.engine import texts
 from quasicentral.engine.catalog import Entry
+from quasicentral.engine.notes import render_note
 from quasicentral.engine.verdict import Outcome, Status
 
 
 def _entry_head(e: Entry) -> dict:
-    return {"id": e.id, "text": e.text, "source": e.source, "number": e.number, "name": e.name, "section": e.section}
+    return {"id": e.id, "text": e.source, "source": e.source, "number": e.number, "name": e.name, "section": e.section}
 
 
 def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
@@ -25,67 +24,60 @@ def verify_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
     for e, o in zip(entries, outcomes):
         v = o.verdict
         row = {**_entry_head(e), "verdict": v.name, "method": v.method.value, "printed_latex": e.latex,
-               "erratum": o.erratum, "status": o.status.value, "detail": v.detail, "dimensions": v.dimensions,
+               "erratum": o.erratum, "status": o.status.value, "detail": v.detail, "dimensions": v.dimensions_text,
                "points": v.points, "digits": list(v.digits)}
         w = getattr(v, "witness", None)
-        row["witness"] = _witness_json(w) if w else None
+        row["witness"] = w.to_json() if w else None
         if o.corrected_verdict is not None:
             row["corrected_verdict"] = o.corrected_verdict.name
             row["corrected_method"] = o.corrected_verdict.method.value
-        row["problems"] = list(o.problems)
+        row["problems"] = o.problem_texts
         rows.append(row)
     return {"equations": rows, "summary": summary(outcomes)}
 
 
-def _witness_json(w) -> dict:
-    return {"parameters": dict(w.parameters), "printed": w.printed, "corrected": w.corrected,
-            "digits": w.digits, "certified": w.certified, "printed_certified": w.printed_certified,
-            "corrected_certified": w.corrected_certified, "working_digits": w.working_digits,
-            "quantity": w.quantity, "relative_difference": w.relative_difference}
-
-
 def errata_document(entries: list[Entry], outcomes: list[Outcome]) -> dict:
     """Errata (each with its ``cause`` ids and its note rendered from its witness), the root
-    ``causes`` (id, title, kind, the displays they affect, one witness) and cleared suspects."""
+    ``causes`` (id, title, kind, the displays they affect, one witness) and cleared suspects —
+    from the outcomes alone (each carries its records)."""
     out_e, out_c = [], []
     witness_of: dict[str, dict] = {}
+    causes: dict[tuple[str, str], object] = {}
     for e, o in zip(entries, outcomes):
-        text = texts.text_of(e.id)
-        errs, cleared = text.errata, text.cleared
-        if e.id in errs:
-            rec = errs[e.id]
+        rec = o.records.erratum if o.records is not None else None
+        clr = o.records.cleared if o.records is not None else None
+        if rec is not None:
             w = getattr(o.verdict, "witness", None)
-            wj = _witness_json(w) if w else _dimensional_witness(o)
+            wj = w.to_json() if w else _dimensional_witness(o)
             witness_of[e.id] = wj
-            out_e.append({**_entry_head(e), "kind": rec.kind, "cause": list(rec.causes),
+            out_e.append({**_entry_head(e), "kind": rec.kind.value, "cause": list(rec.causes),
                           "printed_latex": e.latex, "corrected_latex": rec.corrected_latex,
-                          "witness": wj, "note": errata_mod.render_note(rec.note, w), "status": o.status.value,
+                          "witness": wj, "note": render_note(rec.note, w), "status": o.status.value,
                           "evidence": o.verdict.detail, "method": o.verdict.method.value})
-        if e.id in cleared:
-            rec = cleared[e.id]
+            for c in o.causes:
+                causes.setdefault((c.source, c.id), c)
+        if clr is not None:
             # on an erratum the suspected detail is kept in the correction: its verdict is the evidence
-            v = o.corrected_verdict if e.id in errs else o.verdict
-            out_c.append({**_entry_head(e), "kind": "cleared", "suspicion": rec.suspicion,
-                          "branch": rec.branch or None,
+            v = o.corrected_verdict if rec is not None else o.verdict
+            out_c.append({**_entry_head(e), "kind": "cleared", "suspicion": clr.suspicion,
+                          "branch": clr.branch or None,
                           "printed_latex": e.latex,
-                          "corrected_latex": errs[e.id].corrected_latex if e.id in errs else e.latex,
-                          "witness": None, "note": rec.note, "status": o.status.value,
-                          "evidence": (("the correction keeps it and is " if e.id in errs else "")
+                          "corrected_latex": rec.corrected_latex if rec is not None else e.latex,
+                          "witness": None, "note": clr.note, "status": o.status.value,
+                          "evidence": (("the correction keeps it and is " if rec is not None else "")
                                        + f"{v.name} ({v.method.value}): {v.detail}"),
                           "method": v.method.value})
-    causes = []
-    selected = list(dict.fromkeys(texts.text_of(e.id) for e in entries))
-    for c in (c for t in selected for c in t.causes.values()):
+    rank = {tid: i for i, tid in enumerate(dict.fromkeys(e.source for e in entries))}
+    out_causes = []
+    for c in sorted(causes.values(), key=lambda c: (rank[c.source], c.order)):
         displays = [r["id"] for r in out_e if r["text"] == c.source and c.id in r["cause"]]
-        if not displays:
-            continue  # a cause of entries not selected
         # one witness: the first certified one among its displays, else the first
         ws = [(i, witness_of[i]) for i in displays]
         wid, wit = next(((i, w) for i, w in ws if w.get("certified")), ws[0])
-        causes.append({"id": c.id, "text": c.source, "source": c.source, "title": c.title, "title_cs": c.title_cs, "kind": c.kind,
-                       "note": c.note, "note_cs": c.note_cs, "displays": displays,
-                       "witness": {"display": wid, **wit}})
-    return {"causes": causes, "errata": out_e, "cleared": out_c}
+        out_causes.append({"id": c.id, "text": c.source, "source": c.source, "title": c.title,
+                           "title_cs": c.title_cs, "kind": c.kind.value, "note": c.note, "note_cs": c.note_cs,
+                           "displays": displays, "witness": {"display": wid, **wit}})
+    return {"causes": out_causes, "errata": out_e, "cleared": out_c}
 
 
 def _dimensional_witness(o: Outcome) -> dict:
@@ -96,13 +88,15 @@ def _dimensional_witness(o: Outcome) -> dict:
 
 
 def catalog_document(entries: list[Entry], coverage: dict) -> dict:
-    from quasicentral.notation.dimensions import check_relation
+    from quasicentral.engine.dimensions import check_relation
+    from quasicentral.engine.wording import render
 
     rows = []
     for e in entries:
         problems = [c for c in (check_relation(r, e.dims) for r in e.relations()) if c.inconsistent or c.undetermined]
         rows.append({**_entry_head(e), "printed_latex": e.latex, "transcription": e.printed_text,
-                     "dimensions": "consistent" if not problems else "; ".join(str(c) for c in problems),
+                     "dimensions": "consistent" if not problems else "; ".join(
+                         f"{c.status.value}: {render(c.problem)}" for c in problems),
                      "latex_parser": coverage["entries"].get(e.id)})
     return {"equations": rows, "latex_parser": coverage["summary"]}
 
@@ -124,7 +118,7 @@ def junit_xml(entries: list[Entry], outcomes: list[Outcome]) -> str:
                 ET.SubElement(props, "property", name=k, value=val)
             if not o.ok:
                 f = ET.SubElement(case, "failure", message=f"{o.status.value}: {o.verdict.name}", type=o.verdict.name)
-                f.text = "; ".join(o.problems) or o.verdict.detail
+                f.text = "; ".join(o.problem_texts) or o.verdict.detail
             elif o.status in (Status.ERRATUM, Status.CLEARED):
                 out = ET.SubElement(case, "system-out")
                 out.text = f"{o.status.value}: printed form {o.verdict.name} ({o.verdict.method.value}); {o.verdict.detail}"

@@ -127,12 +127,33 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
     return True
 
 
-def coverage(entries: list[Entry], progress=None, use_cache: bool = True) -> dict:
+def parse_within(entry: Entry, seconds: float) -> tuple[dict[str, bool], bool]:
+    """Which backends read ``entry`` correctly, each within ``seconds`` of wall-clock and of CPU
+    time; and whether the time ran out (then the answer is not kept)."""
+    from quasicentral.notation.timelimit import CPU, WALL, TimeLimitExceeded, time_limit
+
+    out, ran_out = {}, False
+    for b in BACKENDS:
+        try:
+            with time_limit(seconds, WALL) as wall, time_limit(seconds, CPU) as cpu:
+                out[b] = parse_agrees(entry, b)
+        except TimeLimitExceeded as exc:
+            if not ((wall and wall.owns(exc)) or (cpu and cpu.owns(exc))):
+                raise
+            out[b], ran_out = False, True
+        except RecursionError:
+            out[b] = False
+    return out, ran_out
+
+
+def coverage(entries: list[Entry], progress=None, use_cache: bool = True, seconds: float = 120.0) -> dict:
     """Per entry, which backends read it correctly; and the totals.  Each entry's answer is
     kept in the verdict cache under the code (sympy's, lark's and ANTLR's versions included)
     and its text's files: a parse costs up to seconds (lark's Earley parser), and the answer
-    cannot change while neither does.  ``progress`` (a :class:`quasicentral.progress.Progress`
-    callback) is told of each entry; the totals' ``cached`` says how many were read back."""
+    cannot change while neither does.  Each parse is bounded by ``seconds`` (wall-clock and
+    CPU): an entry that runs out is not read, says so (``out_of_time``), and is not kept.
+    ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told of each entry;
+    the totals' ``cached`` says how many were read back."""
     from quasicentral.progress import notify
 
     keys = _cache_keys(entries)
@@ -144,15 +165,21 @@ def coverage(entries: list[Entry], progress=None, use_cache: bool = True) -> dic
             per[e.id] = got
             cached += 1
     notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries parsed")
+    out_of_time = []
     for e in entries:
         if e.id in per:
             continue
-        per[e.id] = {b: parse_agrees(e, b) for b in BACKENDS}
-        _write(keys[e.id], per[e.id])
+        per[e.id], ran_out = parse_within(e, seconds)
+        if ran_out:
+            out_of_time.append(e.id)
+        else:
+            _write(keys[e.id], per[e.id])
         notify(progress, len(per), len(entries), e.id, cached, "entries parsed")
     per = {e.id: per[e.id] for e in entries}
     summary = {"entries": len(entries), **{b: sum(v[b] for v in per.values()) for b in BACKENDS},
                "any": sum(any(v.values()) for v in per.values())}
+    if out_of_time:
+        summary["out_of_time"] = out_of_time
     return {"entries": per, "summary": summary, "cached": cached}
 
 
@@ -160,13 +187,15 @@ def _cache_keys(entries: list[Entry]) -> dict[str, str]:
     import hashlib
     import json
 
-    from quasicentral.engine import texts
-    from quasicentral.engine.fingerprint import code_fingerprint
+    from pathlib import Path
+
+    from quasicentral.engine.fingerprint import code_fingerprint, folder_fingerprint
 
     code = code_fingerprint()  # the checker's code and sympy's version among others
     parsers = _parser_versions()
-    text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
-    return {e.id: hashlib.sha256(json.dumps(["latex-parser", code, parsers, text_fp[e.text], e.id, BACKENDS]
+    roots = {(e.source, Path(e.path).parent.parent) for e in entries}  # a catalog file's text folder
+    text_fp = {tid: folder_fingerprint(tid, root) for tid, root in roots}
+    return {e.id: hashlib.sha256(json.dumps(["latex-parser", code, parsers, text_fp[e.source], e.id, BACKENDS]
                                             ).encode()).hexdigest() for e in entries}
 
 
@@ -194,12 +223,15 @@ def _read(key: str) -> dict[str, bool] | None:
     """A kept answer, checked (a damaged or foreign file is parsed anew)."""
     import json
 
+    from quasicentral.files import read_private
+
     path = _cache_file(key)
-    if not path.is_file():  # a FIFO or a device in its place is not read (it could block)
+    data = read_private(path.parent, path.name)  # this user's own, a regular file, not a link
+    if data is None:
         return None
     try:
-        got = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+        got = json.loads(data.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError):
         return None
     if isinstance(got, dict) and set(got) == set(BACKENDS) and all(isinstance(v, bool) for v in got.values()):
         return {b: got[b] for b in BACKENDS}
@@ -209,11 +241,11 @@ def _read(key: str) -> dict[str, bool] | None:
 def _write(key: str, answer: dict[str, bool]) -> None:
     import json
 
-    from quasicentral.files import write_text
+    from quasicentral.files import ensure_dir, write_text
 
     path = _cache_file(key)
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
+        ensure_dir(path.parent)  # never through a symbolic link
         write_text(path, json.dumps(answer, sort_keys=True))
     except OSError:
         pass  # a read-only cache is not an error

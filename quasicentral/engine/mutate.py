@@ -24,9 +24,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from quasicentral.engine import catalog, texts
+from enum import Enum
+
+from quasicentral.engine import catalog
 from quasicentral.engine.checker import Options, check
-from quasicentral.engine.registry import REGISTRY, derived
 from quasicentral.engine.verdict import Refuted, Verified
 from quasicentral.notation.symbols import SymbolTable
 from quasicentral.progress import OptionalCallback, notify
@@ -163,9 +164,17 @@ def mutants_of(entry: catalog.Entry, per_entry: int | None = None) -> list[Mutan
     return out
 
 
+class Equivalence(str, Enum):
+    """How a mutant that the fast checker does not refute was shown equivalent on the domain."""
+
+    PROOF = "proof"  # sympy proves it equal with the domain's signs as assumptions
+    NUMERIC = "numeric"  # the full checker verifies it at every point
+
+
 def _equivalent(mutant: list, original: list, der, result) -> bool:
     """The mutant says the same as the original: sympy proves every compared value equal."""
-    from quasicentral.engine.checker import claims_for, symbolic_zero
+    from quasicentral.engine.claims import claims_for
+    from quasicentral.engine.proofs import prove_zero
     from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
     def residual(rel):
@@ -176,15 +185,19 @@ def _equivalent(mutant: list, original: list, der, result) -> bool:
             a is not None and b is not None and (sp.expand(a - b) == 0 or sp.expand(a + b) == 0) for a, b in pairs):
         return True  # the same equations, sides exchanged (a = b for b = a)
     try:  # a mutant sympy cannot solve is not shown equivalent: the checker then judges it
-        with time_limit(FAST.symbolic_seconds):
+        with time_limit(FAST.symbolic_seconds) as limit:
             cm, co = claims_for(mutant, der, result), claims_for(original, der, result)
-    except (TimeLimitExceeded, Exception):  # noqa: BLE001 - CannotCompare included
+    except TimeLimitExceeded as exc:
+        if limit is None or not limit.owns(exc):
+            raise
+        return False
+    except Exception:  # noqa: BLE001 - CannotCompare included
         return False
     if len(cm) != len(co):
         return False
     # no forced radical rewriting here: an "equivalent" mutant must be equal everywhere, or the
     # recall would be flattered by mutants dropped on a rewrite that holds only in part
-    return all(symbolic_zero(a.printed - b.printed, 1.0, force=False) for a, b in zip(cm, co))
+    return all(prove_zero(a.printed - b.printed, 1.0, force=False) for a, b in zip(cm, co))
 
 
 def _domain_assumptions(der, syms, table: SymbolTable) -> dict:
@@ -201,88 +214,101 @@ def _domain_assumptions(der, syms, table: SymbolTable) -> dict:
     return repl
 
 
-def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTable) -> str | None:
-    """``"proof"`` when sympy proves every compared value of the mutant equal to the derived one
-    with the domain's signs as assumptions (κ ≥ 0 ⇒ √(κ²) = κ); ``"numeric"`` when the full
-    checker (:data:`STRONG`) verifies it at every point; else None."""
-    from quasicentral.engine.checker import claims_for, numeric, symbolic_zero
+def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTable) -> Equivalence | None:
+    """:data:`Equivalence.PROOF` when sympy proves every compared value of the mutant equal to
+    the derived one with the domain's signs as assumptions (κ ≥ 0 ⇒ √(κ²) = κ);
+    :data:`Equivalence.NUMERIC` when the full checker (:data:`STRONG`) verifies it at every
+    point; else None."""
+    from quasicentral.engine.claims import claims_for
+    from quasicentral.engine.ladder import numeric
+    from quasicentral.engine.proofs import prove_zero
     from quasicentral.notation.domain import substitute_definitions
     from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
     try:
-        with time_limit(FAST.symbolic_seconds):
+        with time_limit(FAST.symbolic_seconds) as limit:
             cm = claims_for(mutant, der, result)
-    except (TimeLimitExceeded, Exception):  # noqa: BLE001 - CannotCompare included
+    except TimeLimitExceeded as exc:
+        if limit is None or not limit.owns(exc):
+            raise
+        return None
+    except Exception:  # noqa: BLE001 - CannotCompare included
         return None
     defs = der.domain.definition_map(table)
     residuals = [substitute_definitions(c.printed - c.derived, defs) for c in cm]
     syms = set().union(*(r.free_symbols for r in residuals)) if residuals else set()
     repl = _domain_assumptions(der, syms, table)
-    if repl and all(symbolic_zero(r.xreplace(repl), 2.0, force=False) for r in residuals):
-        return "proof"
-    from quasicentral.engine.verdict import Verified
-
+    if repl and all(prove_zero(r.xreplace(repl), 2.0, force=False) for r in residuals):
+        return Equivalence.PROOF
     if all(isinstance(numeric(c, der.domain, f"{label}#{i}", STRONG, table), Verified) for i, c in enumerate(cm)):
-        return "numeric"
+        return Equivalence.NUMERIC
     return None
 
 
-def _run_entry(args):
-    eid, per_entry = args
-    entry = texts.entry(eid)
-    der = REGISTRY[eid]
-    base = check(entry.relations(), entry.dims, der, eid, FAST, entry.symbols)
-    rows, on_domain = [], []
-    result = derived(eid)
-    for mu in mutants_of(entry, per_entry):
-        v = check(list(mu.relations), entry.dims, der, eid, FAST, entry.symbols)
-        # an equivalent mutant has the original's values, so it cannot be refuted where the
-        # original is not (a refuted original is a false alarm, counted apart): sympy is asked
-        # whether a mutant is equivalent only when the numbers did not refute it
-        if not isinstance(v, Refuted) and _equivalent(list(mu.relations), entry.relations(), der, result):
-            continue
-        if isinstance(v, Verified):
-            how = equivalent_on_domain(list(mu.relations), der, result, f"{eid}:{mu.operator}:{mu.site}",
-                                       entry.symbols)
-            if how is not None:
-                on_domain.append({"entry": eid, "operator": mu.operator, "site": mu.site, "how": how})
+def _run_entry(ws, eid: str, per_entry: int | None):
+    from quasicentral.engine.run import derivation_of, quiet_stdout
+
+    entry = ws.entry(eid)
+    der = derivation_of(ws, entry)
+    with quiet_stdout():
+        try:
+            result, failed = (ws.result(eid) if der.func is not None else {}), None
+        except (Exception, SystemExit) as exc:  # noqa: BLE001 - the entry's derivation failed: no mutants to judge
+            result, failed = None, f"{type(exc).__name__}: {exc}"
+        base = check(entry.relations(), entry.dims, der, eid, FAST, entry.symbols, result, failed)
+        rows, on_domain = [], []
+        if failed is not None:
+            return eid, True, rows, on_domain
+        for mu in mutants_of(entry, per_entry):
+            v = check(list(mu.relations), entry.dims, der, eid, FAST, entry.symbols, result)
+            # an equivalent mutant has the original's values, so it cannot be refuted where the
+            # original is not (a refuted original is a false alarm, counted apart): sympy is asked
+            # whether a mutant is equivalent only when the numbers did not refute it
+            if not isinstance(v, Refuted) and _equivalent(list(mu.relations), entry.relations(), der, result):
                 continue
-        rows.append({"entry": eid, "operator": mu.operator, "site": mu.site, "detected": isinstance(v, Refuted),
-                     "verdict": v.name, "method": v.method.value, "detail": v.detail[:200]})
+            if isinstance(v, Verified):
+                how = equivalent_on_domain(list(mu.relations), der, result, f"{eid}:{mu.operator}:{mu.site}",
+                                           entry.symbols)
+                if how is not None:
+                    on_domain.append({"entry": eid, "operator": mu.operator, "site": mu.site, "how": how.value})
+                    continue
+            rows.append({"entry": eid, "operator": mu.operator, "site": mu.site, "detected": isinstance(v, Refuted),
+                         "verdict": v.name, "method": v.method.value, "detail": v.detail[:200]})
     return eid, isinstance(base, Refuted), rows, on_domain
 
 
-def verified_entries(selected: list[texts.Text]) -> list[str]:
-    """Entries whose printed form is expected to verify (not errata)."""
-    texts.activate(selected)
-    return [e.id for t in selected for e in t.entries.values() if e.id in REGISTRY and e.id not in t.errata]
+def verified_entries(ws, selected: list) -> list[str]:
+    """Entries whose printed form is expected to verify (not errata, not cleared suspects that
+    are errata), with a derivation."""
+    from quasicentral.engine.run import derivation_of
+
+    for t in selected:
+        t.validate()  # a mistake in a folder's data is named now (file and line), not in a worker
+    ws.load(selected)
+    return [e.id for t in selected for e in t.entries.values()
+            if derivation_of(ws, e) is not None and e.id not in t.errata]
 
 
-def run(selected: list[texts.Text] | None = None, per_entry: int | None = None, ids: list[str] | None = None,
-        jobs: int | None = None, progress: OptionalCallback = None) -> dict:
-    """Mutation testing over the verified entries of ``selected`` (default: the shipped texts)
-    or over ``ids``.  ``progress``, if given, is called with a
-    :class:`quasicentral.progress.Progress` at the start and after each entry."""
+def run(ws, selected: list, per_entry: int | None = None, ids: list[str] | None = None,
+        jobs: int | None = None, progress: OptionalCallback = None, timeout: float | None = None) -> dict:
+    """Mutation testing over the verified entries of ``selected`` or over ``ids``.  ``progress``,
+    if given, is called with a :class:`quasicentral.progress.Progress` at the start and after
+    each entry.  An entry whose worker is lost (past ``timeout``, or ended) counts as a false
+    alarm: its unmutated form could not be confirmed."""
     from quasicentral.engine.run import families
     from quasicentral.engine.workers import map_grouped
 
-    selected = texts.activate(selected if selected is not None else texts.shipped())
-    ids = ids if ids is not None else verified_entries(selected)
+    ids = ids if ids is not None else verified_entries(ws, selected)
     jobs = jobs or min(len(ids), os.cpu_count() or 1) or 1
-    work = [(i, per_entry) for i in ids]
-    notify(progress, 0, len(work), "", 0, "entries mutated")
+    notify(progress, 0, len(ids), "", 0, "entries mutated")
     by_id = {}
-    if jobs > 1:
-        def done(_work, res) -> None:
-            by_id[res[0]] = res
-            notify(progress, len(by_id), len(work), res[0], 0, "entries mutated")
 
-        map_grouped(_run_entry, [[(i, per_entry) for i in g] for g in families(ids)], jobs, done)
-    else:
-        for w in work:
-            res = _run_entry(w)
-            by_id[res[0]] = res
-            notify(progress, len(by_id), len(work), res[0], 0, "entries mutated")
+    def done(_eid, res) -> None:
+        by_id[res[0]] = res
+        notify(progress, len(by_id), len(ids), res[0], 0, "entries mutated")
+
+    map_grouped(lambda eid: _run_entry(ws, eid, per_entry), families(ws, ids), jobs, done,
+                timeout=(timeout or 120.0) * 10, on_lost=lambda eid, why: (eid, True, [], []))
     results = [by_id[i] for i in ids]
     rows = [r for _, _, rs, _ in results for r in rs]
     on_domain = [r for _, _, _, ds in results for r in ds]
@@ -297,7 +323,7 @@ def run(selected: list[texts.Text] | None = None, per_entry: int | None = None, 
         "entries": len(ids),
         "mutants": len(rows),
         "detected": detected,
-        "recall": (detected / len(rows)) if rows else 1.0,
+        "recall": (detected / len(rows)) if rows else None,
         "false_alarms": len(false_alarms),
         "false_alarm_entries": false_alarms,
         "by_operator": dict(sorted(by_op.items())),
@@ -306,9 +332,15 @@ def run(selected: list[texts.Text] | None = None, per_entry: int | None = None, 
     }
 
 
+def passed(res: dict) -> bool:
+    """Recall 100 % on at least one mutant, and no false alarm."""
+    return res["mutants"] > 0 and res["recall"] == 1.0 and res["false_alarms"] == 0
+
+
 def table(res: dict) -> str:
+    recall = f"recall {100 * res['recall']:.1f} %" if res["recall"] is not None else "no mutant to measure a recall on"
     lines = [f"{res['mutants']} mutants of {res['entries']} verified entries: {res['detected']} detected, "
-             f"recall {100 * res['recall']:.1f} %; false alarms on the unmutated catalog: {res['false_alarms']}"]
+             f"{recall}; false alarms on the unmutated catalog: {res['false_alarms']}"]
     for op, d in res["by_operator"].items():
         lines.append(f"  {op:22s} {d['detected']:4d} / {d['mutants']:<4d}")
     for r in res["undetected"]:

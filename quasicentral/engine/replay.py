@@ -18,7 +18,7 @@ from pathlib import Path
 
 from quasicentral.engine.fingerprint import cache_dir, code_fingerprint, folder_fingerprint
 
-REPLAY_VERSION = "1"
+REPLAY_VERSION = "2"  # 2: the texts a run was built on, beyond those it selected
 RUNS = "runs"  # the records' folder inside the cache
 
 
@@ -33,6 +33,7 @@ class Record:
     entries: int
     junit: str | None
     verdicts: dict[str, str]  # per-entry verdict file name -> sha256 of its bytes
+    depends: list = None  # [id, folder, hash] of every other text the verdicts were built on
 
 
 def key(command: str, options: dict, folders: list[tuple[str, Path]]) -> str:
@@ -56,36 +57,70 @@ def digest(path: Path) -> str | None:
 
 
 def load(k: str) -> Record | None:
-    """The record under ``k`` if there is one and every verdict it was built from is unchanged;
-    raises :class:`ReplayError` for a record of the wrong shape."""
+    """The record under ``k`` if there is one of this user's own, and every verdict and text it
+    was built from is unchanged; raises :class:`ReplayError` for a record of the wrong shape."""
+    from quasicentral.files import read_private
+
     path = _path(k)
-    try:
-        raw = path.read_bytes()
-    except OSError:
+    raw = read_private(path.parent, path.name)
+    if raw is None:
         return None
     try:
         d = json.loads(raw.decode("utf-8"))
         rec = Record(stdout=d["stdout"], exit=d["exit"], entries=d["entries"], junit=d["junit"],
-                     verdicts=dict(d["verdicts"]))
+                     verdicts=dict(d["verdicts"]), depends=list(d["depends"]))
         ok = (isinstance(rec.stdout, str) and rec.exit in (0, 1) and isinstance(rec.entries, int)
               and (rec.junit is None or isinstance(rec.junit, str)) and rec.verdicts
-              and all(isinstance(a, str) and isinstance(b, str) for a, b in rec.verdicts.items()))
+              and all(isinstance(a, str) and isinstance(b, str) for a, b in rec.verdicts.items())
+              and all(isinstance(x, list) and len(x) == 3 and all(isinstance(y, str) for y in x) for x in rec.depends))
     except (ValueError, KeyError, TypeError, AttributeError) as exc:
         raise ReplayError(f"{path}: wrong shape ({type(exc).__name__})") from None
     if not ok:
         raise ReplayError(f"{path}: wrong shape")
     folder = cache_dir()
     for name, sha in rec.verdicts.items():
-        if Path(name).name != name or digest(folder / name) != sha:
+        if Path(name).name != name or private_digest(folder, name) != sha:
             return None  # a verdict changed: read and check them one by one
+    for tid, root, fp in rec.depends:
+        if folder_fingerprint(tid, Path(root)) != fp:
+            return None  # a text the verdicts were built on changed
     return rec
+
+
+def private_digest(folder: Path, name: str) -> str | None:
+    """The hash of a record that only this user can have written (else None)."""
+    from quasicentral.files import read_private
+
+    data = read_private(folder, name)
+    return hashlib.sha256(data).hexdigest() if data is not None else None
+
+
+def dependencies(ws, ids: list[str]) -> list | None:
+    """[id, folder, hash] of every text the results of ``ids`` were built on beyond their
+    own (None when that cannot be known: the run is then not kept for replay)."""
+    out = {}
+    for eid in ids:
+        own = eid.split(":", 1)[0]
+        try:
+            built = ws.built_on(eid)
+        except (Exception, SystemExit):  # noqa: BLE001 - a failed derivation: nothing is known of it
+            return None
+        for tid in sorted(built - {own}):
+            try:
+                t = ws.text(tid)
+            except KeyError:
+                return None
+            out[tid] = [tid, str(t.root), t.fingerprint()]
+    return [out[k] for k in sorted(out)]
 
 
 def store(k: str, rec: Record) -> None:
     from quasicentral.files import write_text
 
+    from quasicentral.files import ensure_dir
+
     try:
-        _path(k).parent.mkdir(parents=True, exist_ok=True)
+        ensure_dir(_path(k).parent)  # never through a symbolic link
         write_text(_path(k), json.dumps(asdict(rec), sort_keys=True))
     except OSError:
         pass  # a read-only cache is not an error

@@ -3,8 +3,11 @@
 An outcome's status is ``verified`` (printed = derived), ``erratum`` (printed refuted and the
 registered correction verified), ``cleared`` (a registered suspicion that verified), or
 ``unexpected`` (anything else: a new mismatch, a "typo" that turned out right, an
-inconclusive entry).  Verdicts are cached under a hash of the code, the catalog, the errata
-and the options, so a second run reads them back; ``use_cache=False`` forces a cold run.
+inconclusive entry).  Verdicts are cached under a hash of the code, the entry's text and the
+options; a record also names every other text its derivations were built on, with their
+hashes, and is read back only while those are unchanged.  ``use_cache=False`` forces a cold
+run.  Each entry is checked within its budget (``Options.timeout``, wall-clock and CPU time):
+past it, or where anything fails, the entry is inconclusive with the reason — never the run.
 """
 
 from __future__ import annotations
@@ -12,77 +15,143 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-from dataclasses import asdict
+import sys
+from contextlib import contextmanager
 from pathlib import Path
 
-from quasicentral.engine import catalog, texts
-from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
+from quasicentral.engine import catalog
 from quasicentral.engine.checker import Options, check
-from quasicentral.engine.registry import REGISTRY, reading_kept
+from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
+from quasicentral.engine.identity import identity_derivation
+from quasicentral.engine.reasons import Code, Reason
+from quasicentral.engine.verdict import EntryRecords, Inconclusive, Method, Outcome, Refuted, Status, Verified
 from quasicentral.engine.workers import map_grouped
-from quasicentral.engine.verdict import Inconclusive, Method, Outcome, Refuted, Status, Verdict, Verified
-from quasicentral.files import write_text
+from quasicentral.files import read_private, write_text
+from quasicentral.notation.timelimit import CPU, WALL, TimeLimitExceeded, time_limit
 from quasicentral.progress import OptionalCallback, notify
 
+CACHE_FORMAT = "3"  # 3: typed reasons
 
-def verify_entry(entry: catalog.Entry, opts: Options) -> Outcome:
-    text = texts.text_of(entry.id)
-    derivation = REGISTRY.get(entry.id)
+
+def records_of(ws, eid: str) -> EntryRecords:
+    """The text's records of entry ``eid``: its erratum, cleared suspicion and causes."""
+    text = ws.text(eid.split(":", 1)[0])
+    err = text.errata.get(eid)
+    causes = tuple(text.causes[c] for c in err.causes if c in text.causes) if err is not None else ()
+    return EntryRecords(err, text.cleared.get(eid), causes)
+
+
+def _error(exc: BaseException) -> str:
+    if isinstance(exc, SystemExit):
+        return f"the derivation calls sys.exit({exc.code!r})"
+    return f"{type(exc).__name__}: {exc}"[:300]
+
+
+def derivation_of(ws, entry: catalog.Entry):
+    """The derivation that settles ``entry``: its text's, or — in an identity text, where the
+    entry has none — the entry's own relation checked as it stands."""
+    der = ws.derivation(entry.id)
+    if der is None and ws.text(entry.source).check == "identity":
+        der = identity_derivation(entry)
+    return der
+
+
+def verify_entry(ws, entry: catalog.Entry, opts: Options) -> Outcome:
+    """The outcome of one entry, within its budget; any failure is this entry's."""
+    records = records_of(ws, entry.id)
+    try:
+        with time_limit(opts.timeout, WALL) as wall, time_limit(opts.timeout, CPU) as cpu:
+            return _verify_entry(ws, entry, opts, records)
+    except Exception as exc:  # noqa: BLE001 - anything that fails is this entry's, never the run's
+        v = Inconclusive(Method.NONE, Reason.of(Code.STAGE_FAILED, stage="check", error=_error(exc)))
+        return Outcome(entry.id, v, Status.UNEXPECTED, records.erratum is not None,
+                       problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name, reason=v.reason),), records=records)
+    except TimeLimitExceeded as exc:
+        mine = (wall is not None and wall.owns(exc)) or (cpu is not None and cpu.owns(exc))
+        if not mine:
+            raise
+        v = Inconclusive(Method.NONE, Reason.of(Code.OUT_OF_TIME, stage="check", seconds=opts.timeout,
+                                                clock=exc.limit.clock.value))
+        return Outcome(entry.id, v, Status.UNEXPECTED, records.erratum is not None,
+                       problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name, reason=v.reason),), records=records)
+
+
+def _verify_entry(ws, entry: catalog.Entry, opts: Options, records: EntryRecords) -> Outcome:
+    derivation = derivation_of(ws, entry)
     if derivation is None:
-        v = Inconclusive(Method.NONE, "no derivation registered for this entry yet")
-        return Outcome(entry.id, v, Status.UNEXPECTED, problems=("no derivation",))
-    v = check(entry.relations(), entry.dims, derivation, entry.id, opts, entry.symbols)
-    rec = text.errata.get(entry.id)
+        v = Inconclusive(Method.NONE, Reason(Code.NO_DERIVATION))
+        return Outcome(entry.id, v, Status.UNEXPECTED, problems=(Reason(Code.NO_DERIVATION_PROBLEM),), records=records)
+    result, failed = None, None
+    try:
+        result = ws.result(entry.id) if derivation.func is not None else {}
+    except (Exception, SystemExit, GeneratorExit) as exc:  # noqa: BLE001 - a failing derivation is this entry's
+        failed = _error(exc)
+    v = check(entry.relations(), entry.dims, derivation, entry.id, opts, entry.symbols, result, failed)
+    noted = _uses_checked(ws, derivation, failed)
+    rec = records.erratum
     if rec is not None:
         # the same points as the printed form (one seed): the printed and the corrected value
         # are compared with the same derived one
-        cv = check(rec.relations(), {**entry.dims}, derivation, entry.id, opts, entry.symbols)
+        cv = check(rec.relations(), entry.dims, derivation, entry.id, opts, entry.symbols, result, failed)
         problems = []
         if not isinstance(v, Refuted):
-            problems.append(f"the printed form is {v.name}, not refuted: the registered erratum does not stand")
+            problems.append(Reason.of(Code.ERRATUM_NOT_REFUTED, verdict=v.name))
         if not isinstance(cv, Verified):
-            problems.append(f"the corrected form is {cv.name}: {cv.detail}")
-        return Outcome(entry.id, v, Status.UNEXPECTED if problems else Status.ERRATUM, True, cv, tuple(problems))
-    if entry.id in text.cleared:
+            problems.append(Reason.of(Code.CORRECTION_NOT_VERIFIED, verdict=cv.name, reason=cv.reason))
+        status = Status.UNEXPECTED if problems else Status.ERRATUM
+        return Outcome(entry.id, v, status, True, cv, tuple(problems) + noted, records)
+    if records.cleared is not None:
         status = Status.CLEARED if isinstance(v, Verified) else Status.UNEXPECTED
-        return Outcome(entry.id, v, status, problems=() if status.ok else (f"cleared suspect is {v.name}",))
+        problems = () if status.ok else (Reason.of(Code.CLEARED_NOT_VERIFIED, verdict=v.name),)
+        return Outcome(entry.id, v, status, problems=problems + noted, records=records)
     if isinstance(v, Verified):
-        return Outcome(entry.id, v, Status.VERIFIED)
-    return Outcome(entry.id, v, Status.UNEXPECTED, problems=(f"{v.name}: {v.detail}",))
+        return Outcome(entry.id, v, Status.VERIFIED, problems=noted, records=records)
+    return Outcome(entry.id, v, Status.UNEXPECTED, problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name,
+                                                                      reason=v.reason),), records=records)
 
 
-def _outcome_json(o: Outcome) -> dict:
-    return {"id": o.id, "verdict": o.verdict.to_json(), "status": o.status.value, "erratum": o.erratum,
-            "corrected_verdict": o.corrected_verdict.to_json() if o.corrected_verdict else None,
-            "problems": list(o.problems)}
+def _uses_checked(ws, derivation, failed) -> tuple[Reason, ...]:
+    """A note where a derivation's declared ``uses=`` differs from what it used (the documents
+    cite what it used; the status does not change)."""
+    if failed is not None or not derivation.declared_uses or derivation.func is None:
+        return ()
+    used = ws.used(derivation.id)
+    if set(derivation.declared_uses) == used:
+        return ()
+    return (Reason.of(Code.USES_MISMATCH, declared=tuple(derivation.declared_uses), used=tuple(sorted(used))),)
 
 
-def _outcome_from_json(d: dict) -> Outcome:
-    cv = d.get("corrected_verdict")
-    return Outcome(d["id"], Verdict.from_json(d["verdict"]), Status(d["status"]), d["erratum"],
-                   Verdict.from_json(cv) if cv else None, tuple(d["problems"]))
-
-
-def _worker(args):
-    eid, opts = args
-    return eid, _outcome_json(verify_entry(texts.entry(eid), opts))
+def lost_outcome(eid: str, why: str, records: EntryRecords) -> Outcome:
+    """The outcome of an entry whose worker was lost (killed past its budget, or ended)."""
+    v = Inconclusive(Method.NONE, Reason.of(Code.STAGE_FAILED, stage="check", error=why))
+    return Outcome(eid, v, Status.UNEXPECTED, records.erratum is not None,
+                   problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name, reason=v.reason),), records=records)
 
 
 class CacheWarning(UserWarning):
     """A cached verdict was discarded (wrong shape, or contradicting the errata registry)."""
 
 
-def cached_problem(eid: str, d: object) -> str | None:
+def cached_problem(ws, eid: str, d: object) -> str | None:
     """Why a cached outcome cannot be trusted, or None.  The cache is checked, not trusted: an
     entry of the wrong shape, or whose status contradicts the errata registry or its own
     verdicts, is recomputed."""
     try:
-        o = _outcome_from_json(d)  # type: ignore[arg-type]
+        o = Outcome.from_record(d["outcome"])  # type: ignore[index]
+        built_on = d["built_on"]  # type: ignore[index]
+        if not isinstance(built_on, dict):
+            raise TypeError("built_on")
     except (KeyError, TypeError, ValueError, AttributeError) as exc:
         return f"wrong shape ({type(exc).__name__}: {exc})"
     if o.id != eid:
         return f"it is the outcome of {o.id!r}"
-    text = texts.text_of(eid)
+    for tid, fp in built_on.items():
+        try:
+            if ws.text(tid).fingerprint() != fp:
+                return f"it was built on text {tid!r} as it was before an edit"
+        except KeyError:
+            return f"it was built on text {tid!r}, which is not open"
+    text = ws.text(eid.split(":", 1)[0])
     allowed = ((Status.ERRATUM,) if eid in text.errata else (Status.CLEARED,) if eid in text.cleared
                else (Status.VERIFIED,))
     if o.status not in allowed + (Status.UNEXPECTED,):
@@ -96,20 +165,39 @@ def cached_problem(eid: str, d: object) -> str | None:
     return None
 
 
-def cache_keys(entries: list[catalog.Entry], opts: Options) -> dict[str, str]:
+def cache_keys(ws, entries: list[catalog.Entry], opts: Options) -> dict[str, str]:
     """Each entry's key in the verdict cache: the code, its text's files, its id, the options."""
     fp = code_fingerprint()
-    text_fp = {t.id: t.fingerprint() for t in {texts.text_of(e.id) for e in entries}}
-    return {e.id: hashlib.sha256(json.dumps([fp, text_fp[e.text], e.id, asdict(opts)], sort_keys=True).encode()
-                                 ).hexdigest() for e in entries}
+    text_fp = {t.id: t.fingerprint() for t in {ws.text(e.source) for e in entries}}
+    return {e.id: hashlib.sha256(json.dumps([CACHE_FORMAT, fp, text_fp[e.source], e.id, opts.cache_key()],
+                                            sort_keys=True).encode()).hexdigest() for e in entries}
 
 
 def cache_file(key: str) -> Path:
     return cache_dir() / f"{key}.json"
 
 
-def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None,
-        progress: OptionalCallback = None, on_warning=None) -> list[Outcome]:
+def _read_cached(ws, entries, key_of, warn) -> dict[str, dict]:
+    results = {}
+    for e in entries:
+        data = read_private(cache_dir(), cache_file(key_of[e.id]).name)
+        if data is None:
+            continue
+        try:
+            d = json.loads(data)
+        except ValueError:
+            warn(f"cache: {e.id}: unreadable cached verdict discarded, recomputed")
+            continue
+        problem = cached_problem(ws, e.id, d)
+        if problem:
+            warn(f"cache: {e.id}: {problem}; discarded, recomputed")
+            continue
+        results[e.id] = d
+    return results
+
+
+def run(ws, entries: list[catalog.Entry], opts: Options, use_cache: bool = True, jobs: int | None = None,
+        progress: OptionalCallback = None, on_warning=None, isolate: bool = True) -> list[Outcome]:
     """Outcomes for ``entries`` in catalog order (cached ones read back, the rest computed).
 
     ``progress``, if given, is called with a :class:`quasicentral.progress.Progress` once the
@@ -117,7 +205,9 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
     entry (``current`` = its id); it is called in this process, never in a worker.  A cached
     outcome that fails :func:`cached_problem` is discarded and recomputed; each such event is
     reported once through ``on_warning(text)`` (default: :class:`CacheWarning` via
-    :mod:`warnings`) — the library never prints."""
+    :mod:`warnings`) — the library never prints.  ``isolate`` (default) runs the texts' code in
+    supervised worker processes (a text's ``sys.exit``, crash or hang ends only its entry); with
+    ``isolate=False`` and one job, everything runs in this process."""
     import warnings
 
     def warn(text: str) -> None:
@@ -126,63 +216,86 @@ def run(entries: list[catalog.Entry], opts: Options, use_cache: bool = True, job
         else:
             warnings.warn(text, CacheWarning, stacklevel=3)
 
-    key_of = cache_keys(entries, opts)
-    results: dict[str, dict] = {}
-    cdir = cache_dir()
-    if use_cache:
-        for e in entries:
-            f = cache_file(key_of[e.id])
-            if f.is_file():
-                try:
-                    d = json.loads(f.read_text())
-                except (OSError, ValueError):
-                    warn(f"cache: {e.id}: unreadable cached verdict discarded, recomputed")
-                    continue
-                problem = cached_problem(e.id, d)
-                if problem:
-                    warn(f"cache: {e.id}: {problem}; discarded, recomputed")
-                    continue
-                results[e.id] = d
+    selected = list(dict.fromkeys(ws.text(e.source) for e in entries))
+    for t in selected:
+        t.validate()  # a mistake in a folder's data is named now (file and line), not in a worker
+    ws.load(selected)
+    key_of = cache_keys(ws, entries, opts)
+    results = _read_cached(ws, entries, key_of, warn) if use_cache else {}
     todo = [e.id for e in entries if e.id not in results]
     cached = len(results)
     notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries")
-    with reading_kept(use_cache):
-        _compute(todo, opts, jobs, results, progress, len(entries), cached)
+    ws.derivations.read_kept = ws.derivations.read_kept and use_cache
+    _compute(ws, todo, opts, jobs, results, progress, len(entries), cached, isolate)
     if todo:
         try:
-            cdir.mkdir(parents=True, exist_ok=True)
+            cache_dir().mkdir(parents=True, exist_ok=True)
             for eid in todo:
                 write_text(cache_file(key_of[eid]), json.dumps(results[eid], sort_keys=True))
         except OSError:
             pass  # a read-only cache is not an error
-    return [_outcome_from_json(results[e.id]) for e in entries]
+    return [Outcome.from_record(results[e.id]["outcome"], records_of(ws, e.id)) for e in entries]
 
 
-def _compute(todo: list[str], opts: Options, jobs: int | None, results: dict, progress: OptionalCallback,
-             total: int, cached: int) -> None:
-    """The outcomes of ``todo`` into ``results``, on ``jobs`` forked workers."""
+def _record(ws, eid: str, outcome: Outcome) -> dict:
+    """An outcome as the cache keeps it, with the hashes of the other texts it was built on."""
+    try:
+        others = sorted(ws.built_on(eid) - {eid.split(":", 1)[0]})
+    except (Exception, SystemExit):  # noqa: BLE001 - a failed derivation was built on nothing more
+        others = []
+    built = {}
+    for tid in others:
+        try:
+            built[tid] = ws.text(tid).fingerprint()
+        except KeyError:
+            pass
+    return {"outcome": outcome.to_record(), "built_on": built}
+
+
+def _compute(ws, todo: list[str], opts: Options, jobs: int | None, results: dict, progress: OptionalCallback,
+             total: int, cached: int, isolate: bool) -> None:
+    """The outcomes of ``todo`` into ``results``, on ``jobs`` forked workers (at least one
+    when ``isolate``)."""
     if not todo:
         return
     jobs = jobs or min(len(todo), os.cpu_count() or 1)
-    if jobs > 1 and len(todo) > 1:
-        def done(_args, got) -> None:
-            eid, res = got
-            results[eid] = res
-            notify(progress, len(results), total, eid, cached, "entries")
 
-        map_grouped(_worker, [[(i, opts) for i in g] for g in families(todo)], jobs, done)
+    def work(eid: str):
+        with quiet_stdout():
+            return eid, _record(ws, eid, verify_entry(ws, ws.entry(eid), opts))
+
+    def lost(eid: str, why: str):
+        return eid, {"outcome": lost_outcome(eid, why, records_of(ws, eid)).to_record(), "built_on": {}}
+
+    def done(_eid, got) -> None:
+        eid, res = got
+        results[eid] = res
+        notify(progress, len(results), total, eid, cached, "entries")
+
+    if isolate or jobs > 1:
+        map_grouped(work, families(ws, todo), max(jobs, 1), done, timeout=opts.timeout, on_lost=lost)
     else:
         for eid in todo:
-            results[eid] = _worker((eid, opts))[1]
-            notify(progress, len(results), total, eid, cached, "entries")
+            done(eid, work(eid))
 
 
-def families(ids: list[str]) -> list[list[str]]:
+@contextmanager
+def quiet_stdout():
+    """What a text's code prints goes to standard error, never into a command's output."""
+    before = sys.stdout
+    sys.stdout = sys.stderr
+    try:
+        yield
+    finally:
+        sys.stdout = before
+
+
+def families(ws, ids: list[str]) -> list[list[str]]:
     """``ids`` grouped by the module of their derivations (entries of one family build on the
     same steps: a worker that keeps to one derives them once), in catalog order."""
     out: dict[str, list[str]] = {}
     for eid in ids:
-        der = REGISTRY.get(eid)
+        der = ws.derivation(eid)
         out.setdefault(der.module if der is not None else "", []).append(eid)
     return list(out.values())
 
@@ -195,8 +308,7 @@ def summary(outcomes: list[Outcome]) -> dict:
         by_status[o.status.value] = by_status.get(o.status.value, 0) + 1
         by_verdict[o.verdict.name] = by_verdict.get(o.verdict.name, 0) + 1
         by_method[o.verdict.method.value] = by_method.get(o.verdict.method.value, 0) + 1
-    causes = sorted({(o.id.split(":", 1)[0], c) for o in outcomes if o.status is Status.ERRATUM
-                     for c in texts.text_of(o.id).errata[o.id].causes})
+    causes = sorted({(o.id.split(":", 1)[0], c.id) for o in outcomes if o.status is Status.ERRATUM for c in o.causes})
     return {
         "entries": len(outcomes),
         "causes": len(causes),

@@ -21,7 +21,7 @@ class SkeletonError(ValueError):
 
 TEXT_TOML = '''\
 # The text: its id prefixes every equation id; its symbols are the only names its transcriptions
-# and derivations may use.  The format is described in FORMAT.md (quasicentral's derivations/).
+# and derivations may use.  The format is described in quasicentral's texts/FORMAT.md.
 id = "{id}"
 title = "Uniformly accelerated motion"
 authors = ["Your Name"]
@@ -123,7 +123,7 @@ DERIVATION_PY = '''\
 """Derivations of the text, one small function per printed equation, in the text's order.
 
 Each function returns sympy objects and is registered with @derives for the catalog id it
-settles; its docstring states the formula.  See quasicentral's derivations/FORMAT.md.
+settles; its docstring states the formula.  See quasicentral's texts/FORMAT.md.
 """
 
 import sympy as sp

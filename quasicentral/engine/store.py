@@ -51,21 +51,21 @@ def _has_dummy(value) -> bool:
 
 
 class DerivedStore:
-    """The records of the derivations of the text modules ``modules`` (module-name prefixes,
-    one per text folder).  ``fingerprint_of(tid)`` hashes a text's files (None: not an active
+    """The records of the derivations of the text modules ``modules()`` names (module-name
+    prefixes, one per text folder).  ``fingerprint_of(tid)`` hashes a text's files (None: not an active
     text); a record is keyed by the code, its own text's hash and its id, and names the hashes
     of the other texts its result was built on, which must still be the same to be read."""
 
-    def __init__(self, fingerprint_of, modules: frozenset[str]):
+    def __init__(self, fingerprint_of, modules):
         self._fingerprint = fingerprint_of
-        self.modules = modules
+        self._modules = modules  # the module prefixes of the texts (a callable: they may grow)
 
     @property
     def directory(self) -> Path:
         return cache_dir() / STORE_FOLDER  # where the cache is now ($QUASICENTRAL_CACHE may change)
 
     def keeps(self, module: str) -> bool:
-        return module.rpartition(".")[0] in self.modules
+        return module.rpartition(".")[0] in self._modules()
 
     def _path(self, eid: str, module: str) -> Path | None:
         tid = eid.split(":", 1)[0]

@@ -1,4 +1,5 @@
-"""Forked worker processes: ending with their parent, and keeping each family of work together.
+"""Forked worker processes under supervision: keeping each family of work together, ending
+with their parent, and never outliving an item's time.
 
 :func:`map_grouped` runs a function over items that come in groups (the entries of one
 derivation module): each worker works through its own groups first, in order, and only then
@@ -6,17 +7,24 @@ takes what is left of the others' from their far ends.  Entries of one family bu
 same derivations; a worker that keeps to its family derives them once (and keeps them,
 :mod:`quasicentral.engine.store`), where workers taking entries in turn would each derive the
 whole chain at the same time.
+
+The parent watches every worker: an item that runs past ``timeout`` seconds of wall-clock time
+(the worker's own budget failed: a C loop, a blocked call) gets its worker killed and is
+answered by ``on_lost(item, why)``; so is the item of a worker that ends on its own (a
+``sys.exit`` or ``os._exit`` in a text's code, a crash).  A new worker takes over the rest.
+SIGINT and SIGTERM end the parent and every worker at once.  A worker's standard output goes
+to standard error: what a text's code prints never mixes into a command's output.
 """
 
 from __future__ import annotations
 
 import os
 import pickle
-import queue as queue_mod
 import signal
 import sys
 import threading
-from concurrent.futures import ProcessPoolExecutor
+import time
+from dataclasses import dataclass
 from multiprocessing import get_context
 from typing import Callable, Sequence, TypeVar
 
@@ -24,12 +32,18 @@ T = TypeVar("T")
 R = TypeVar("R")
 
 PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
-POLL_SECONDS = 0.5  # how often the parent looks at its workers while it waits for a result
-IDLE_SECONDS = 30.0  # how long results of workers that have all returned may take to arrive
+POLL_SECONDS = 0.2  # how often the parent looks at its workers while it waits for a result
+#: the parent kills a worker whose item has run this much longer than its timeout (the
+#: worker's own budget ends it sooner; this is for a worker stuck where signals do not reach)
+GRACE_SECONDS = 5.0
+
+
+class Lost(Exception):
+    """An item whose worker was killed or ended without an answer (``why``)."""
 
 
 def die_with_parent(parent: int) -> None:
-    """Worker initializer: end this process when ``parent`` ends, even by ``kill -9``.
+    """In a worker: end this process when ``parent`` ends, even by ``kill -9``.
 
     On Linux the kernel sends SIGKILL when the parent dies (``prctl(PR_SET_PDEATHSIG)``); as a
     fallback (other systems, or no libc) a daemon thread checks every second whether the process
@@ -46,20 +60,12 @@ def die_with_parent(parent: int) -> None:
         os._exit(1)
 
     def watch() -> None:
-        import time
-
         while True:
             time.sleep(1.0)
             if os.getppid() != parent:
                 os._exit(1)
 
     threading.Thread(target=watch, name="quasicentral-parent-watch", daemon=True).start()
-
-
-def worker_pool(jobs: int) -> ProcessPoolExecutor:
-    """A pool of ``jobs`` forked workers that end with this process (see :func:`die_with_parent`)."""
-    return ProcessPoolExecutor(max_workers=jobs, mp_context=get_context("fork"),
-                               initializer=die_with_parent, initargs=(os.getpid(),))
 
 
 def preference_orders(groups: Sequence[Sequence[int]], jobs: int) -> list[list[int]]:
@@ -79,33 +85,76 @@ def preference_orders(groups: Sequence[Sequence[int]], jobs: int) -> list[list[i
     return orders
 
 
-_SHARED: dict = {}  # what the forked workers of map_grouped read (set before the fork)
+@dataclass
+class _Worker:
+    process: object
+    conn: object  # the parent's end of the worker's own pipe
+    order: list[int]
+    item: int | None = None  # the item it is on
+    since: float = 0.0  # when it started it (monotonic)
 
 
-def _take_and_run(w: int) -> int:
-    func, items, orders, claimed, lock, results = (
-        _SHARED[k] for k in ("func", "items", "orders", "claimed", "lock", "results"))
-    # this process may end with results nobody reads (the parent gave up): never block on them
-    results.cancel_join_thread()
-    done = 0
-    for i in orders[w]:
-        with lock:
-            if claimed[i]:
-                continue
-            claimed[i] = 1
-        # pickled here, so that a result that cannot be sent fails in this call, not silently
-        # in the queue's thread
-        results.put((i, pickle.dumps(func(items[i]), protocol=pickle.HIGHEST_PROTOCOL)))
-        done += 1
-    return done
+class _Pool:
+    """The shared state of one :func:`map_grouped` call (inherited by the forked workers).
+    Each worker has a pipe of its own: a worker killed while it writes breaks only its pipe."""
+
+    def __init__(self, func, items, orders, timeout):
+        ctx = get_context("fork")
+        self.ctx, self.func, self.items, self.timeout = ctx, func, items, timeout
+        self.orders = orders
+        self.claimed = ctx.RawArray("b", len(items))
+        self.lock = ctx.Lock()
+        self.parent = os.getpid()
+
+    def start(self, order: list[int]) -> _Worker:
+        mine, theirs = self.ctx.Pipe(duplex=False)
+        p = self.ctx.Process(target=self._work, args=(order, theirs), daemon=True)
+        p.start()
+        theirs.close()
+        return _Worker(p, mine, order)
+
+    def _work(self, order: list[int], conn) -> None:
+        die_with_parent(self.parent)
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent ends us; no traceback of our own
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+        try:
+            os.dup2(2, 1)  # a text's prints go to stderr, never into the command's output
+            sys.stdout = sys.stderr
+        except OSError:
+            pass
+        for i in order:
+            with self.lock:
+                if self.claimed[i]:
+                    continue
+                self.claimed[i] = 1
+            conn.send(("start", i, None))
+            try:
+                payload = ("done", pickle.dumps(self.func(self.items[i]), protocol=pickle.HIGHEST_PROTOCOL))
+            except BaseException as exc:  # noqa: BLE001 - reported to the parent, which raises it
+                payload = ("error", _portable(exc))
+            conn.send((payload[0], i, payload[1]))
+        conn.send(("idle", None, None))
+        conn.close()
+        os._exit(0)
+
+
+def _portable(exc: BaseException) -> bytes:
+    """An exception as bytes the parent can raise again (its type kept where it pickles)."""
+    try:
+        return pickle.dumps(exc, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # noqa: BLE001 - an exception that does not pickle is sent as its words
+        return pickle.dumps(RuntimeError(f"{type(exc).__name__}: {exc}"[:500]))
 
 
 def map_grouped(func: Callable[[T], R], groups: Sequence[Sequence[T]], jobs: int,
-                on_result: Callable[[T, R], None]) -> None:
+                on_result: Callable[[T, R], None], timeout: float | None = None,
+                on_lost: Callable[[T, str], R] | None = None) -> None:
     """``on_result(item, func(item))`` for every item of ``groups``, in this process as each
-    result arrives, computed on ``jobs`` forked workers (see the module's docstring).  An
-    exception in ``func`` or ``on_result`` (or an interrupt) is raised here once every worker
-    has finished the item it was on; none starts another."""
+    result arrives, computed on ``jobs`` forked workers (see the module's docstring).  An item
+    whose worker is lost (killed past ``timeout`` + :data:`GRACE_SECONDS`, or ended on its
+    own) gets ``on_result(item, on_lost(item, why))`` (without ``on_lost``: :class:`Lost` is
+    raised); an exception in ``func`` is raised here.  On any exception (an interrupt
+    included) every worker is killed at once."""
     items = [x for g in groups for x in g]
     if not items:
         return
@@ -113,39 +162,102 @@ def map_grouped(func: Callable[[T], R], groups: Sequence[Sequence[T]], jobs: int
     for g in groups:
         index_groups.append(list(range(start, start + len(g))))
         start += len(g)
-    ctx = get_context("fork")
-    results = ctx.Queue()
-    claimed = ctx.RawArray("b", len(items))
-    _SHARED.update(func=func, items=items, orders=preference_orders(index_groups, jobs),
-                   claimed=claimed, lock=ctx.Lock(), results=results)
+    pool = _Pool(func, items, preference_orders(index_groups, min(jobs, len(items))), timeout)
+    workers: list[_Worker] = []
+    answered: set[int] = set()
+    main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _terminate) if main else None
     try:
-        with worker_pool(jobs) as pool:
-            futures = [pool.submit(_take_and_run, w) for w in range(jobs)]
-            try:
-                _collect(futures, results, items, on_result)
-            except BaseException:
-                with _SHARED["lock"]:  # no worker starts another item
-                    claimed[:] = b"\1" * len(items)
-                raise
+        workers += [pool.start(order) for order in pool.orders]
+        while len(answered) < len(items):
+            _receive(pool, workers, answered, on_result)
+            _watch(pool, workers, answered, on_result, on_lost)
     finally:
-        _SHARED.clear()
-        results.close()
+        for w in workers:
+            _kill(w.process)
+            w.conn.close()
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
 
 
-def _collect(futures, results, items, on_result) -> None:
-    received, idle = 0, 0
-    while received < len(items):
+def _terminate(signum, frame):
+    raise SystemExit(128 + signum)
+
+
+def _kill(process) -> None:
+    try:
+        if process.is_alive():
+            process.kill()
+        process.join(timeout=1.0)
+    except (OSError, ValueError, AssertionError):
+        pass
+
+
+def _receive(pool: _Pool, workers: list, answered: set, on_result) -> None:
+    """What the workers have sent, waiting at most :data:`POLL_SECONDS`."""
+    from multiprocessing.connection import wait
+
+    ready = wait([w.conn for w in workers], timeout=POLL_SECONDS)
+    for w in workers:
+        if w.conn in ready:
+            _drain(pool, w, answered, on_result)
+
+
+def _drain(pool: _Pool, w: _Worker, answered: set, on_result) -> None:
+    """Every message a worker has sent so far."""
+    while True:
         try:
-            i, payload = results.get(timeout=POLL_SECONDS)
-        except queue_mod.Empty:
-            failed = next((f.exception() for f in futures if f.done() and f.exception()), None)
-            if failed is not None:
-                raise failed
-            if all(f.done() for f in futures):
-                # every worker has returned: what they sent is still on its way, for a moment
-                idle += 1
-                if idle * POLL_SECONDS > IDLE_SECONDS or sum(f.result() for f in futures) < len(items):
-                    raise RuntimeError(f"the workers ended with {len(items) - received} results not received")
+            if not w.conn.poll():
+                return
+            kind, i, payload = w.conn.recv()
+        except (EOFError, OSError):
+            return  # its pipe is closed: _watch answers for its item
+        if kind == "start":
+            w.item, w.since = i, time.monotonic()
+        elif kind == "done":
+            w.item = None
+            if i not in answered:
+                answered.add(i)
+                on_result(pool.items[i], pickle.loads(payload))
+        elif kind == "error":
+            raise pickle.loads(payload)
+        elif kind == "idle":
+            w.item = None
+
+
+def _watch(pool: _Pool, workers: list, answered: set, on_result, on_lost) -> None:
+    """Kill a worker past its item's time; answer the item of a worker that is gone; start a
+    worker in the place of each one lost while items are left."""
+    now = time.monotonic()
+    for w in list(workers):
+        why = None
+        if w.item is not None and pool.timeout is not None and now - w.since > pool.timeout + GRACE_SECONDS:
+            why = f"killed after {now - w.since:.0f} s (its budget of {pool.timeout:g} s did not stop it)"
+            _kill(w.process)
+        elif w.process.is_alive():
             continue
-        received += 1
-        on_result(items[i], pickle.loads(payload))
+        else:
+            _drain(pool, w, answered, on_result)  # what it sent before it ended
+            w.process.join(timeout=0)
+            code = w.process.exitcode
+            if w.item is not None:
+                why = f"its worker process ended (exit code {code}) while it was on this entry"
+        workers.remove(w)
+        w.conn.close()
+        if w.item is not None and w.item not in answered:
+            answered.add(w.item)
+            if on_lost is None:
+                raise Lost(why)
+            on_result(pool.items[w.item], on_lost(pool.items[w.item], why))
+        if any(not pool.claimed[j] for j in range(len(pool.items))):
+            workers.append(pool.start(w.order))
+    if not workers and len(answered) < len(pool.items):
+        # items claimed by workers that vanished before they said which: answered as lost
+        for j in [j for j in range(len(pool.items)) if j not in answered]:
+            if pool.claimed[j]:
+                answered.add(j)
+                if on_lost is None:
+                    raise Lost("its worker vanished")
+                on_result(pool.items[j], on_lost(pool.items[j], "its worker vanished"))
+        if len(answered) < len(pool.items):
+            workers.append(pool.start([j for j in range(len(pool.items)) if j not in answered]))

@@ -15,11 +15,12 @@ import hashlib
 import random
 from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import lru_cache
 
 import mpmath
 import sympy as sp
 
-from quasicentral.notation.bridge import mp_lambdify
+from quasicentral.notation.bridge import mp_lambdify, mp_value
 from quasicentral.notation.symbols import SymbolTable
 
 Interval = tuple[sp.Expr, sp.Expr]
@@ -40,14 +41,16 @@ class Domain:
     definitions: tuple[tuple[sp.Basic, sp.Expr], ...] = ()
     constraints: tuple[sp.Basic, ...] = ()
     defaults: bool = True  # apply the text's definitions
+    real: tuple[sp.Basic, ...] = ()  # symbols drawn on the real line here (their range's real segment)
 
     @staticmethod
-    def of(ranges=None, definitions=None, constraints=(), defaults=True) -> "Domain":
+    def of(ranges=None, definitions=None, constraints=(), defaults=True, real=()) -> "Domain":
         return Domain(
             ranges=tuple((ranges or {}).items()),
             definitions=tuple((definitions or {}).items()),
             constraints=tuple(constraints),
             defaults=defaults,
+            real=tuple(real),
         )
 
     def definition_map(self, table: SymbolTable) -> dict[sp.Basic, sp.Expr]:
@@ -61,7 +64,7 @@ class Domain:
         return out
 
     def key(self) -> str:
-        return sp.srepr((self.ranges, self.definitions, self.constraints, self.defaults))
+        return sp.srepr((self.ranges, self.definitions, self.constraints, self.defaults, self.real))
 
 
 def substitute_definitions(expr: sp.Basic, defs: dict[sp.Basic, sp.Expr], rounds: int = 6) -> sp.Basic:
@@ -78,6 +81,14 @@ def seed_for(label: str) -> int:
     return int.from_bytes(hashlib.sha256(label.encode()).digest()[:8], "big")
 
 
+class NoRange(KeyError):
+    """A symbol to be sampled that has no range (``symbol``)."""
+
+    def __init__(self, symbol):
+        super().__init__(symbol)
+        self.symbol = symbol
+
+
 @dataclass
 class Sampler:
     """Draws exact points for a set of free symbols inside a :class:`Domain`."""
@@ -91,43 +102,43 @@ class Sampler:
     def draw(self, count: int, max_tries: int = 200) -> list[dict[sp.Symbol, sp.Expr]]:
         """``count`` points (fewer if the constraints reject too many tries); the same arguments
         give the same points, which are remembered (a mutation run draws them for every mutant)."""
-        key = (self.domain, id(self.table), tuple(self.symbols), self.seed,
-               tuple(sorted(self.extra_ranges.items(), key=lambda kv: str(kv[0]))), count, max_tries)
-        if key not in _DRAWN:
-            if len(_DRAWN) > DRAWS_REMEMBERED:
-                _DRAWN.clear()
-            _DRAWN[key] = (self.table, self._draw(count, max_tries))  # the table kept alive: its id stays its own
-        return [dict(pt) for pt in _DRAWN[key][1]]
-
-    def _draw(self, count: int, max_tries: int) -> list[dict[sp.Symbol, sp.Expr]]:
-        rng = random.Random(self.seed)
         ranges = self.domain.range_map(self.table)
         ranges.update(self.extra_ranges)
-        defs = self.domain.definition_map(self.table)
-        wanted = set(self.symbols)
-        for c in self.domain.constraints:
-            wanted |= substitute_definitions(c, defs).free_symbols
-        order = _sampling_order(wanted, ranges, defs)
-        missing = [sym for sym in order if sym not in ranges]
-        if missing:
-            raise KeyError(f"no range declared for symbol {missing[0]}")
-        # endpoints and constraints with the definitions applied, once
-        spans = {sym: _Span(*(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym])) for sym in order}
-        constraints = [_Constraint(substitute_definitions(c, defs)) for c in self.domain.constraints]
-        points = []
-        tries = 0
-        while len(points) < count and tries < count * max_tries:
-            tries += 1
-            pt: dict[sp.Symbol, sp.Expr] = {}
-            for sym in order:
-                pt[sym] = spans[sym].at(pt, Fraction(rng.randrange(1, 2**20), 2**20))
-            if all(c.holds(pt) for c in constraints):
-                points.append(pt)
-        return points
+        key = (tuple(sorted(ranges.items(), key=lambda kv: sp.default_sort_key(kv[0]))),
+               tuple(sorted(self.domain.definition_map(self.table).items(), key=lambda kv: sp.default_sort_key(kv[0]))),
+               self.domain.constraints, self.domain.real, tuple(self.symbols), self.seed, count, max_tries)
+        return [dict(pt) for pt in _draw(*key)]
 
 
-_DRAWN: dict = {}
-DRAWS_REMEMBERED = 2_000
+@lru_cache(maxsize=2_000)
+def _draw(ranges: tuple, definitions: tuple, constraints: tuple, real: tuple, symbols: tuple, seed: int,
+          count: int, max_tries: int) -> tuple:
+    """The points (remembered: a function of its arguments alone)."""
+    rng = random.Random(seed)
+    ranges, defs = dict(ranges), dict(definitions)
+    wanted = set(symbols)
+    for c in constraints:
+        wanted |= substitute_definitions(c, defs).free_symbols
+    order = _sampling_order(wanted, ranges, defs)
+    missing = [sym for sym in order if sym not in ranges]
+    if missing:
+        raise NoRange(missing[0])
+    # endpoints and constraints with the definitions applied, once
+    spans = {sym: _Span(*(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym]), real=sym in real)
+             for sym in order}
+    checks = [_Constraint(substitute_definitions(c, defs)) for c in constraints]
+    points = []
+    tries = 0
+    while len(points) < count and tries < count * max_tries:
+        tries += 1
+        pt: dict[sp.Symbol, sp.Expr] = {}
+        for sym in order:
+            pt[sym] = spans[sym].at(pt, rng)
+        if all(c.holds(pt) for c in checks):
+            points.append(pt)
+    return tuple(points)
+
+
 #: significant digits of a point drawn inside a range whose ends are irrational in earlier points
 DRAWN_DIGITS = 25
 
@@ -145,12 +156,22 @@ class _Span:
     that cancels, 1 − cos x at tiny x, does not) and the width exceeds 10^-17 of the value;
     otherwise, or where an end cannot be computed in mpmath, the point is exact.  The earlier
     points may themselves be irrational (φ0 = 1/100 + (π − 1/50)·r): their values are exact
-    numbers, computed at each precision."""
+    numbers, computed at each precision.
 
-    def __init__(self, lo: sp.Expr, hi: sp.Expr):
+    An infinite end maps r to lo + r/(1 − r) (or hi − r/(1 − r); both infinite: (r − ½)/(r(1 − r))),
+    exact rationals over the whole half-line.  Ends with imaginary parts make a box in the
+    complex plane (the corners lo and hi): a point draws its real and its imaginary part; a
+    symbol the domain holds ``real`` is drawn on the box's real segment."""
+
+    def __init__(self, lo: sp.Expr, hi: sp.Expr, real: bool = False):
         self.ends = (lo, hi)
         free = lo.free_symbols | hi.free_symbols
-        self.fixed = (lo, hi - lo) if not free else None  # (lo, width), the same for every point
+        self.infinite = tuple(e in (sp.oo, -sp.oo) for e in (lo, hi))
+        self.box = None
+        if not free and not any(self.infinite) and (sp.im(lo) != 0 or sp.im(hi) != 0):
+            re_lo, re_hi, im_lo, im_hi = (_fraction(v) for v in (sp.re(lo), sp.re(hi), sp.im(lo), sp.im(hi)))
+            self.box = (re_lo, re_hi - re_lo, Fraction(0) if real else im_lo, Fraction(0) if real else im_hi - im_lo)
+        self.fixed = (lo, hi - lo) if not free and not any(self.infinite) else None  # (lo, width), every point's
         # rational fixed ends: a point in Python's fractions, one sympy number made (sympy's own
         # arithmetic took half the time of drawing points)
         self.exact = (Fraction(int(lo.p), int(lo.q)), Fraction(int((hi - lo).p), int((hi - lo).q))) \
@@ -171,20 +192,19 @@ class _Span:
         ok = isinstance(lo, mpmath.mpf) and isinstance(hi, mpmath.mpf) and mpmath.isfinite(hi - lo) and hi > lo
         return (lo, hi) if ok else None
 
-    def at(self, pt: dict, r: Fraction) -> sp.Expr:
+    def at(self, pt: dict, rng: random.Random) -> sp.Expr:
+        r = Fraction(rng.randrange(1, 2**20), 2**20)
+        if self.box is not None:
+            re_lo, re_w, im_lo, im_w = self.box
+            im = im_lo + im_w * Fraction(rng.randrange(1, 2**20), 2**20) if im_w else im_lo
+            re = re_lo + re_w * r
+            return sp.Rational(re.numerator, re.denominator) + sp.I * sp.Rational(im.numerator, im.denominator)
+        if any(self.infinite):
+            return self._unbounded(pt, r)
         if self.compiled is not None and all(pt[a].is_number for a in self.args):
-            try:
-                coarse, fine = self._ends(pt, 40), self._ends(pt, 80)
-                if coarse is not None and fine is not None:
-                    with mpmath.workdps(80):
-                        (lo, hi), width = fine, fine[1] - fine[0]
-                        v = lo + width * r.numerator / r.denominator
-                        if (abs(coarse[0] - lo) + abs(coarse[1] - hi) <= width * mpmath.mpf(10) ** -12
-                                and width > abs(v) * mpmath.mpf(10) ** (8 - DRAWN_DIGITS)):
-                            f = Fraction(mpmath.nstr(v, DRAWN_DIGITS, min_fixed=-mpmath.inf, max_fixed=mpmath.inf))
-                            return sp.Rational(f.numerator, f.denominator)
-            except Exception:  # noqa: BLE001 - an end mpmath cannot compute (an undefined function): exact
-                pass
+            got = self._drawn_in_mpmath(pt, r)
+            if got is not None:
+                return got
         if self.exact is not None:
             lo, width = self.exact
             v = lo + width * r
@@ -195,6 +215,38 @@ class _Span:
             return lo + width * r
         lo, hi = (e.xreplace(pt) for e in self.ends)
         return lo + (hi - lo) * r
+
+    def _unbounded(self, pt: dict, r: Fraction) -> sp.Expr:
+        lo, hi = self.ends
+        if all(self.infinite):
+            v = (r - Fraction(1, 2)) / (r * (1 - r))
+            return sp.Rational(v.numerator, v.denominator)
+        t = r / (1 - r)
+        tail = sp.Rational(t.numerator, t.denominator)
+        return lo.xreplace(pt) + tail if self.infinite[1] else hi.xreplace(pt) - tail
+
+    def _drawn_in_mpmath(self, pt: dict, r: Fraction) -> sp.Expr | None:
+        try:
+            coarse, fine = self._ends(pt, 40), self._ends(pt, 80)
+            if coarse is None or fine is None:
+                return None
+            with mpmath.workdps(80):
+                (lo, hi), width = fine, fine[1] - fine[0]
+                v = lo + width * r.numerator / r.denominator
+                if (abs(coarse[0] - lo) + abs(coarse[1] - hi) <= width * mpmath.mpf(10) ** -12
+                        and width > abs(v) * mpmath.mpf(10) ** (8 - DRAWN_DIGITS)):
+                    f = Fraction(mpmath.nstr(v, DRAWN_DIGITS, min_fixed=-mpmath.inf, max_fixed=mpmath.inf))
+                    return sp.Rational(f.numerator, f.denominator)
+        except Exception:  # noqa: BLE001 - an end mpmath cannot compute (an undefined function): exact
+            pass
+        return None
+
+
+def _fraction(v: sp.Expr) -> Fraction:
+    v = sp.nsimplify(v) if not v.is_Rational else v
+    if not v.is_Rational:
+        v = sp.Rational(str(sp.N(v, 30)))
+    return Fraction(int(v.p), int(v.q))
 
 
 #: a constraint whose two sides differ by less than this (relative, at 30 digits) is decided exactly
@@ -230,10 +282,8 @@ class _Constraint:
 
 
 def _mp(value: sp.Expr):
-    """An exact sympy number as mpmath (at the precision in force)."""
-    if value.is_Rational:
-        return mpmath.mpf(int(value.p)) / int(value.q)
-    return mpmath.mpmathify(sp.N(value, mpmath.mp.dps + 10))
+    """An exact sympy number as mpmath at the precision in force (the one bridge's)."""
+    return mp_value(value, mpmath.mp.dps)
 
 
 def _holds(constraint: sp.Basic, pt: dict) -> bool:

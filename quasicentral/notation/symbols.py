@@ -2,21 +2,23 @@
 
 A text (``text.toml`` in its folder) declares each symbol it writes — its name in the
 transcriptions, its LaTeX, its dimension, where it is sampled and its assumptions — and each
-function of one independent variable (``x(t)``, ``u(theta)``).  :class:`SymbolTable` holds them;
-a transcription is read in the table's namespace, where an unknown name is an error.
+function of one or more independent variables (``x(t)``, ``u(nu, T)``).  :class:`SymbolTable`
+holds them; a transcription is read in the table's namespace by the safe reader of
+:mod:`quasicentral.notation.transcription`, where an unknown name is an error.
 
 The notation shared by all texts:
 
 * ``D(f)`` is df/dv and ``D(f, 2)`` d²f/dv² in the function's own variable v, unevaluated (a
   transcription keeps what was printed); ``D(f, 1, v)`` names the variable where an
-  expression has several.
+  expression has several (a function of several variables: its partial derivative).
 * Elliptic integrals in Jacobi's form take the **modulus** k and the *sine* of the amplitude ζ:
   ``Fj(k, zeta) = F(asin ζ | k²)``, ``Ej(k, zeta) = E(asin ζ | k²)``; complete ones
   ``Kc(k) = K(k²)``, ``Ec(k) = E(k²)``.  sympy, mpmath, scipy and python-flint take the
   **parameter** m = k², which these wrappers pass on.
 * ``arccotg`` is the Czech arccotangent with values in (0, π): arccotg x = π/2 − atan x.
-* Dimensions are monomials in the base dimensions L (length), T (time), M (mass), written
-  ``"L^2/T"``; they are sympy symbols of their own, so a text may also name a symbol L, T or M.
+* ``Approx(x, 4.965114)`` is a printed rounding: it holds when x rounds to the digits shown.
+* Dimensions (:mod:`quasicentral.notation.units`) are monomials in the seven SI base
+  dimensions, symbols of their own, so a text may also name a symbol L, T or M.
 """
 
 from __future__ import annotations
@@ -24,54 +26,30 @@ from __future__ import annotations
 import keyword
 import re
 from dataclasses import dataclass, field
-from functools import lru_cache
+from types import MappingProxyType
 
 import sympy as sp
 
-# --- base dimensions (symbols no transcription can name) ----------------------------------------
-DIM_L, DIM_T, DIM_M = sp.symbols("[L] [T] [M]", positive=True)
-DIMENSIONLESS = sp.Integer(1)
-_DIM_NAMES = {"L": DIM_L, "T": DIM_T, "M": DIM_M}
+from quasicentral.notation import transcription
+from quasicentral.notation.units import DIMENSIONLESS, UnitError, dim_text, parse_dim  # noqa: F401 - re-exported
 
 
 class SymbolError(ValueError):
     """A symbol table, a dimension or a transcription that cannot be read."""
 
 
-@lru_cache(maxsize=512)  # a text spells a few dimensions hundreds of times; sympify costs ~0.3 ms each
-def parse_dim(text: str) -> sp.Expr:
-    """``'L^2/T'`` → L²/T in the base dimensions; ``'1'`` → 1.
-
-    >>> parse_dim("L^2/T")
-    [L]**2/[T]
-    """
-    text = str(text).strip()
-    if not re.fullmatch(r"[LTM0-9^*/() .+-]+", text):
-        raise SymbolError(f"dimension {text!r}: write a monomial in L, T, M such as 'L^2/T' or '1'")
-    try:
-        out = sp.sympify(text.replace("^", "**"), locals=dict(_DIM_NAMES))
-    except (sp.SympifyError, SyntaxError, TypeError) as exc:
-        raise SymbolError(f"dimension {text!r}: {exc}") from None
-    if not isinstance(out, sp.Expr) or out.free_symbols - set(_DIM_NAMES.values()):
-        raise SymbolError(f"dimension {text!r}: write a monomial in L, T, M")
-    return out
-
-
-def dim_text(d: sp.Expr) -> str:
-    """The inverse of :func:`parse_dim`, for messages: L²/T → ``'L^2/T'``."""
-    return sp.sstr(d).replace("**", "^").replace("[", "").replace("]", "")
-
-
 # --- notation shared by every text ---------------------------------------------------------------
 def D(f, order: int = 1, var=None):
     """d^order f / dv^order, unevaluated; v is f's own variable unless given."""
     if var is None:
-        variables = {a.args[0] for a in sp.sympify(f).atoms(sp.core.function.AppliedUndef)
-                     if len(a.args) == 1 and isinstance(a.args[0], sp.Symbol)}
+        variables = {x for a in sp.sympify(f).atoms(sp.core.function.AppliedUndef) for x in a.args
+                     if isinstance(x, sp.Symbol)}
         if len(variables) != 1:
             raise SymbolError(f"D({f}): name the variable, D(f, order, v), where it is not one function's")
         var = variables.pop()
-    return sp.Derivative(f, (var, order))
+    if not (isinstance(order, (int, sp.Integer)) and 0 <= int(order) <= 20):
+        raise SymbolError(f"D({f}, {order}): the order is a whole number from 0 to 20")
+    return sp.Derivative(f, (var, int(order)))
 
 
 def Fj(kk, zz):
@@ -107,33 +85,92 @@ def printed_eq(lhs, rhs, evaluate: bool = False):
     return sp.Eq(lhs, rhs, evaluate=evaluate)
 
 
-#: Functions and constants every transcription may use (a text's symbols come on top).
-FUNCTIONS: dict[str, object] = {
+class Approx(sp.Function):
+    """A printed rounding: ``Approx(x, value, places)`` holds when x rounds to ``value`` at
+    ``places`` decimal places (a transcription writes ``Approx(x, 4.965114)``: the places are
+    the digits printed)."""
+
+    nargs = 3
+
+    def _latex(self, printer):
+        return rf"{printer._print(self.args[0])} \approx {printer._print(self.args[1])}"
+
+
+def _approx(expr, value, places=None):
+    """``Approx`` as a transcription writes it: the printed decimal's places are counted by the
+    reader (:data:`APPROX_PLACES`)."""
+    if places is None:
+        raise SymbolError("Approx(x, value): value is a printed decimal such as 4.965114")
+    return Approx(expr, value, places)
+
+
+_approx.places_of = 1  # the reader passes the decimal places printed in the second argument
+
+
+def _symbol(name):
+    if not (isinstance(name, str) and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name)):
+        raise SymbolError(f"Symbol({name!r}): a name is a letter followed by letters, digits or _")
+    return sp.Symbol(name)
+
+
+def _function(name):
+    if not (isinstance(name, str) and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name)):
+        raise SymbolError(f"Function({name!r}): a name is a letter followed by letters, digits or _")
+    return sp.Function(name)
+
+
+_ELEMENTARY = ("sqrt", "cbrt", "root", "exp", "log", "sin", "cos", "tan", "cot", "sec", "csc", "asin", "acos",
+               "atan", "acot", "asec", "acsc", "atan2", "sinh", "cosh", "tanh", "coth", "sech", "csch", "asinh",
+               "acosh", "atanh", "acoth", "Abs", "sign", "floor", "ceiling", "frac", "re", "im", "arg", "conjugate",
+               "Min", "Max", "Mod", "Heaviside", "DiracDelta", "KroneckerDelta", "Piecewise", "sinc")
+_SPECIAL = ("factorial", "factorial2", "binomial", "gamma", "loggamma", "lowergamma", "uppergamma", "digamma",
+            "polygamma", "beta", "RisingFactorial", "FallingFactorial", "rf", "ff", "zeta", "polylog", "lerchphi",
+            "dirichlet_eta", "LambertW", "erf", "erfc", "erfi", "erfinv", "erfcinv", "Ei", "expint", "E1", "li",
+            "Li", "Si", "Ci", "Shi", "Chi", "fresnels", "fresnelc", "besselj", "bessely", "besseli", "besselk",
+            "hankel1", "hankel2", "jn", "yn", "airyai", "airybi", "airyaiprime", "airybiprime", "hyper", "meijerg",
+            "legendre", "assoc_legendre", "hermite", "laguerre", "assoc_laguerre", "chebyshevt", "chebyshevu",
+            "gegenbauer", "jacobi", "Ynm", "elliptic_k", "elliptic_f", "elliptic_e", "elliptic_pi", "bernoulli",
+            "harmonic")
+_FORMS = ("Sum", "Product", "Integral", "Derivative", "Limit", "Subs", "Order", "O", "Eq", "Ne", "Lt", "Le",
+          "Gt", "Ge", "And", "Or", "Not", "Rational", "Integer", "Tuple")
+_CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "EulerGamma": sp.EulerGamma,
+              "GoldenRatio": sp.GoldenRatio, "Catalan": sp.Catalan}
+
+#: Functions and constants every transcription may use (a text's symbols come on top): sympy's
+#: own by their sympy names, and the notation's.  Read-only.
+FUNCTIONS: MappingProxyType = MappingProxyType({
+    **{name: getattr(sp, name) for name in _ELEMENTARY + _SPECIAL + _FORMS},
+    **_CONSTANTS,
+    "ln": sp.log, "Eq": printed_eq, "Symbol": _symbol, "Function": _function, "Approx": _approx,
     "D": D, "Fj": Fj, "Ej": Ej, "Kc": Kc, "Ec": Ec, "arccotg": arccotg,
-    "Eq": printed_eq, "Integral": sp.Integral, "Derivative": sp.Derivative, "Sum": sp.Sum,
-    "sqrt": sp.sqrt, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "exp": sp.exp,
-    "log": sp.log, "ln": sp.log, "asin": sp.asin, "acos": sp.acos, "atan": sp.atan,
-    "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh, "pi": sp.pi, "oo": sp.oo, "I": sp.I,
-    "Rational": sp.Rational, "factorial": sp.factorial, "factorial2": sp.factorial2,
-    "elliptic_k": sp.elliptic_k, "elliptic_f": sp.elliptic_f, "elliptic_e": sp.elliptic_e,
-    "Abs": sp.Abs,
-}
+})
 ASSUMPTIONS = ("positive", "nonnegative", "negative", "nonpositive", "real", "integer", "complex")
+#: the names a text may not declare (the forms a transcription is built from); every other
+#: name of the vocabulary may be a text's symbol (beta, gamma, E, zeta …), which then hides
+#: the function of that name in the text's transcriptions
+RESERVED = frozenset({"D", "Fj", "Ej", "Kc", "Ec", "arccotg", "Approx", "Eq", "Ne", "Lt", "Le", "Gt", "Ge", "And",
+                      "Or", "Not", "Integral", "Derivative", "Sum", "Product", "Limit", "Subs", "Symbol",
+                      "Function", "Rational", "Integer", "Tuple", "Piecewise", "oo", "pi"})
 
 
 @dataclass(frozen=True)
 class SymbolSpec:
-    """One declared name: a symbol, or a function of one variable (``variable`` set)."""
+    """One declared name: a symbol, or a function of one or more variables (``variables`` set)."""
 
     name: str
-    obj: sp.Basic  # the Symbol, or the applied function f(v)
+    obj: sp.Basic  # the Symbol, or the applied function f(v) / f(v, w)
     latex: str
     dimension: sp.Expr | None  # None: not declared (dimension checks are then inconclusive)
     range: tuple[sp.Expr, sp.Expr] | None = None
     definition: sp.Expr | None = None
     dots: bool = False  # derivatives in this variable print as Newton dots
-    variable: str | None = None
+    variables: tuple[str, ...] = ()  # a function's variables (empty for a symbol)
     meaning: str = ""
+
+    @property
+    def variable(self) -> str | None:
+        """A function's (first) variable; None for a symbol."""
+        return self.variables[0] if self.variables else None
 
 
 @dataclass(frozen=True, eq=False)
@@ -144,10 +181,12 @@ class SymbolTable:
     """
 
     specs: tuple[SymbolSpec, ...]
-    by_name: dict[str, SymbolSpec] = field(default_factory=dict, repr=False)
+    by_name: MappingProxyType = field(default_factory=lambda: MappingProxyType({}), repr=False)
 
     def __post_init__(self):
-        self.by_name.update({s.name: s for s in self.specs})
+        object.__setattr__(self, "by_name", MappingProxyType({s.name: s for s in self.specs}))
+        object.__setattr__(self, "_namespace", MappingProxyType({**FUNCTIONS, **{s.name: s.obj for s in self.specs}}))
+        object.__setattr__(self, "_calls", MappingProxyType({s.name: s.obj.func for s in self.specs if s.variables}))
 
     def __getattr__(self, name: str):
         spec = self.__dict__.get("by_name", {}).get(name)
@@ -162,8 +201,8 @@ class SymbolTable:
         return name in self.by_name
 
     @property
-    def namespace(self) -> dict[str, object]:
-        return {**FUNCTIONS, **{s.name: s.obj for s in self.specs}}
+    def namespace(self) -> MappingProxyType:
+        return self._namespace
 
     @property
     def dims(self) -> dict[sp.Basic, sp.Expr]:
@@ -183,7 +222,7 @@ class SymbolTable:
         out: dict = {}
         for s in self.specs:
             out[s.obj] = s.latex
-            if s.variable is not None:
+            if s.variables:
                 out[s.obj.func] = s.latex
         return out
 
@@ -195,108 +234,117 @@ class SymbolTable:
     @property
     def variables(self) -> frozenset:
         """The independent variables of the declared functions."""
-        return frozenset(s.obj.args[0] for s in self.specs if s.variable is not None)
+        return frozenset(a for s in self.specs if s.variables for a in s.obj.args)
 
     def names_of(self, objs) -> list[str]:
         rev = {s.obj: s.name for s in self.specs}
         return [rev.get(o, str(o)) for o in objs]
 
     def check_names(self, text: str) -> None:
-        """Refuse a transcription that uses a name this table does not declare."""
-        unknown = _unknown_names(text, self.namespace)
+        """Refuse a transcription that uses a name this table does not declare, or a construct
+        the reader does not allow (nothing is built)."""
+        try:
+            unknown = transcription.check(text, self._namespace)
+        except transcription.TranscriptionError as exc:
+            raise SymbolError(str(exc)) from None
         if unknown:
             raise SymbolError(f"unknown name{'s' if len(unknown) > 1 else ''} {', '.join(unknown)} "
                               "(declare it in text.toml)")
 
     def parse(self, text: str) -> sp.Basic:
-        """Read a transcription (sympy syntax) in this table's namespace, without evaluation
-        of derivatives or integrals; an unknown name is an error, not a fresh symbol."""
-        from sympy.parsing.sympy_parser import auto_number, parse_expr
-
-        self.check_names(text)
-        return parse_expr(text, local_dict=self.namespace, transformations=(auto_number,),
-                          global_dict={"__builtins__": {}, **_GLOBALS}, evaluate=True)
-
-
-_GLOBALS = {"Integer": sp.Integer, "Float": sp.Float, "Symbol": sp.Symbol, "Rational": sp.Rational,
-            "Function": sp.Function}
-_KEYWORD_ARGUMENTS = {"evaluate"}  # sin(x, evaluate=False) keeps a printed form
-
-
-def _unknown_names(text: str, namespace: dict) -> list[str]:
-    import io
-    import tokenize
-
-    names = []
-    previous = None
-    try:
-        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
-            if tok.type == tokenize.NAME and not keyword.iskeyword(tok.string) and previous != ".":
-                if (tok.string not in namespace and tok.string not in _GLOBALS
-                        and tok.string not in _KEYWORD_ARGUMENTS and tok.string not in names):
-                    names.append(tok.string)
-            previous = tok.string if tok.type == tokenize.OP else None
-    except (tokenize.TokenError, IndentationError, SyntaxError):
-        return []  # the parser reports the syntax error itself
-    return names
+        """Read a transcription in this table's namespace (:mod:`quasicentral.notation.transcription`:
+        a whitelist, nothing executed); an unknown name is an error, not a fresh symbol.  A
+        declared function's name called with arguments is its value there (``x(0)``)."""
+        try:
+            return transcription.parse(text, dict(self._namespace), calls=dict(self._calls))
+        except transcription.TranscriptionError as exc:
+            raise SymbolError(str(exc)) from None
 
 
 # --- reading a table from text.toml ------------------------------------------------------------
 _IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _SYMBOL_KEYS = {"latex", "dimension", "assumptions", "range", "definition", "dots", "meaning"}
-_FUNCTION_KEYS = {"latex", "dimension", "assumptions", "variable", "meaning"}
+_FUNCTION_KEYS = {"latex", "dimension", "assumptions", "variable", "variables", "meaning"}
 
 
 def table_from_toml(data: dict, where: str) -> SymbolTable:
     """Build the table of ``[symbols.NAME]`` and ``[functions.NAME]`` tables (see
-    derivations/FORMAT.md); every error names ``where`` and the key."""
+    quasicentral/texts/FORMAT.md); every error names ``where`` and the key."""
     symbols = data.get("symbols", {})
     functions = data.get("functions", {})
     if not isinstance(symbols, dict) or not isinstance(functions, dict):
         raise SymbolError(f"{where}: [symbols] and [functions] are tables of tables")
-    specs: list[SymbolSpec] = []
     objs: dict[str, sp.Basic] = {}
     for name, raw in symbols.items():
         key = f"{where}: symbols.{name}"
         _check_entry(name, raw, _SYMBOL_KEYS, key)
         objs[name] = sp.Symbol(name, **_assumptions(raw.get("assumptions", ["real"]), key))
+    variables_of = {}
     for name, raw in functions.items():
         key = f"{where}: functions.{name}"
         _check_entry(name, raw, _FUNCTION_KEYS, key)
         if name in objs:
             raise SymbolError(f"{key}: {name} is declared as a symbol too")
-        var = raw.get("variable")
-        if not isinstance(var, str) or var not in objs:
-            raise SymbolError(f"{key}: 'variable' must name a declared symbol, not {var!r}")
+        variables_of[name] = _function_variables(raw, objs, key)
         head = sp.Function(name, **_assumptions(raw.get("assumptions", ["real"]), key))
-        objs[name] = head(objs[var])
+        objs[name] = head(*[objs[v] for v in variables_of[name]])
     ns = {**FUNCTIONS, **objs}
+    specs: list[SymbolSpec] = []
     for name, raw in symbols.items():
         key = f"{where}: symbols.{name}"
-        rng = definition = None
-        if "range" in raw:
-            r = raw["range"]
-            if not (isinstance(r, list) and len(r) == 2):
-                raise SymbolError(f"{key}.range: a pair [low, high], such as [\"0\", \"1\"]")
-            rng = tuple(_expr(str(e), ns, f"{key}.range") for e in r)
-        if "definition" in raw:
-            if rng is not None:
-                raise SymbolError(f"{key}: a defined symbol has no range of its own")
-            definition = _expr(str(raw["definition"]), ns, f"{key}.definition")
+        rng, definition = _range_or_definition(raw, ns, key)
+        if "dots" in raw and not isinstance(raw["dots"], bool):
+            raise SymbolError(f"{key}.dots: true or false")
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key), rng,
-                                definition, bool(raw.get("dots", False)), None, str(raw.get("meaning", ""))))
+                                definition, bool(raw.get("dots", False)), (), _meaning(raw, key)))
     for name, raw in functions.items():
         key = f"{where}: functions.{name}"
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key),
-                                variable=raw["variable"], meaning=str(raw.get("meaning", ""))))
+                                variables=variables_of[name], meaning=_meaning(raw, key)))
     return SymbolTable(tuple(specs))
+
+
+def _function_variables(raw: dict, objs: dict, key: str) -> tuple[str, ...]:
+    if "variable" in raw and "variables" in raw:
+        raise SymbolError(f"{key}: give 'variable' or 'variables', not both")
+    names = [raw["variable"]] if "variable" in raw else raw.get("variables")
+    if not (isinstance(names, list) and names and all(isinstance(v, str) and v in objs for v in names)):
+        raise SymbolError(f"{key}: 'variable' (or 'variables', a list) must name declared symbols, "
+                          f"not {raw.get('variable', raw.get('variables'))!r}")
+    if len(set(names)) != len(names):
+        raise SymbolError(f"{key}: a variable is named twice")
+    return tuple(names)
+
+
+def _range_or_definition(raw: dict, ns: dict, key: str):
+    rng = definition = None
+    if "range" in raw:
+        r = raw["range"]
+        if not (isinstance(r, list) and len(r) == 2 and all(isinstance(e, (str, int, float)) and not isinstance(e, bool)
+                                                              for e in r)):
+            raise SymbolError(f"{key}.range: a pair [low, high], such as [\"0\", \"1\"]")
+        rng = tuple(_expr(str(e), ns, f"{key}.range") for e in r)
+    if "definition" in raw:
+        if rng is not None:
+            raise SymbolError(f"{key}: a defined symbol has no range of its own")
+        if not isinstance(raw["definition"], (str, int, float)) or isinstance(raw["definition"], bool):
+            raise SymbolError(f"{key}.definition: an expression in other symbols, as a string")
+        definition = _expr(str(raw["definition"]), ns, f"{key}.definition")
+    return rng, definition
+
+
+def _meaning(raw, key) -> str:
+    m = raw.get("meaning", "")
+    if not isinstance(m, str):
+        raise SymbolError(f"{key}.meaning: a string")
+    return m
 
 
 def _check_entry(name, raw, allowed, key):
     if not _IDENT.match(name) or keyword.iskeyword(name):
         raise SymbolError(f"{key}: a name is a letter followed by letters, digits or _")
-    if name in FUNCTIONS or name in _GLOBALS:
-        raise SymbolError(f"{key}: {name} is a function of the notation (choose another name)")
+    if name in RESERVED:
+        raise SymbolError(f"{key}: {name} is a name of the notation (choose another name)")
     if not isinstance(raw, dict):
         raise SymbolError(f"{key}: a table such as {{ latex = '...', dimension = 'L' }}")
     unknown = set(raw) - allowed
@@ -320,20 +368,16 @@ def _latex(raw, name, key) -> str:
 def _dimension(raw, key):
     if "dimension" not in raw:
         return None
+    if not isinstance(raw["dimension"], (str, int)) or isinstance(raw["dimension"], bool):
+        raise SymbolError(f"{key}.dimension: a string such as \"L/T^2\" or \"J/K\"")
     try:
         return parse_dim(str(raw["dimension"]))
-    except SymbolError as exc:
+    except UnitError as exc:
         raise SymbolError(f"{key}.dimension: {exc}") from None
 
 
 def _expr(text: str, ns: dict, key: str) -> sp.Expr:
-    from sympy.parsing.sympy_parser import auto_number, parse_expr
-
-    unknown = _unknown_names(text, ns)
-    if unknown:
-        raise SymbolError(f"{key}: unknown name {unknown[0]}")
     try:
-        return parse_expr(text, local_dict=dict(ns), transformations=(auto_number,),
-                          global_dict={"__builtins__": {}, **_GLOBALS})
-    except Exception as exc:  # noqa: BLE001 - any parse failure is a malformed table
-        raise SymbolError(f"{key}: cannot read {text!r}: {exc}") from None
+        return transcription.parse(text, ns)
+    except transcription.TranscriptionError as exc:
+        raise SymbolError(f"{key}: {exc.reason if exc.line == 1 else exc}") from None

@@ -1,0 +1,7 @@
+"""``python -m quasicentral.cli``: the command."""
+
+import sys
+
+from quasicentral.cli import main
+
+sys.exit(main())

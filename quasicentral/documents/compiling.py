@@ -1,0 +1,106 @@
+"""Compiling the documents: latexmk, its log read for errors and undefined references, a
+failed job's auxiliary files removed so that the next run starts clean.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+from quasicentral import files
+from quasicentral.documents.blocks import VERSIONS_FILE
+
+
+class LatexError(RuntimeError):
+    """A document did not compile (or has undefined references); ``log`` names the log file."""
+
+    def __init__(self, message: str, log: Path):
+        super().__init__(message)
+        self.log = log
+
+
+
+# --- compiling -------------------------------------------------------------------------------
+_LOG_PROBLEMS = (
+    re.compile(r"^! .*", re.M),
+    re.compile(r"^[^\s:()]+\.(?:tex|sty|cls|aux|toc|out):\d+: .*", re.M),  # -file-line-error
+    re.compile(r"LaTeX Warning: Reference .* undefined.*"),
+    re.compile(r"LaTeX Warning: There were undefined references.*"),
+    re.compile(r"LaTeX Warning: Label .* multiply defined.*"),
+    re.compile(r"pdfTeX warning \(dest\): name\{.*\} has been referenced but does not exist.*"),
+)
+
+
+def log_problems(log_text: str) -> list[str]:
+    """Errors and undefined or duplicate references in a LaTeX log."""
+    found = []
+    for pat in _LOG_PROBLEMS:
+        found += [m.group(0).strip() for m in pat.finditer(log_text)]
+    return found
+
+
+def compile_one(out: Path, name: str) -> Path:
+    """``latexmk -pdf`` one document in ``out``; raise :class:`LatexError` on any LaTeX error
+    or undefined reference.  Returns the PDF's path."""
+    stem = name[:-4]
+    for suffix in (".pdf", ".log") + AUX_SUFFIXES:  # LaTeX would write through a link
+        files.inside(out, stem + suffix)
+    log = out / f"{stem}.log"
+    env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1"}
+    cmd = ["latexmk", "-norc", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",
+           "-silent", name]
+    for _attempt in (1, 2):
+        try:
+            proc = subprocess.run(cmd, cwd=out, capture_output=True, text=True, env=env, timeout=600)
+        except FileNotFoundError:
+            raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
+        except subprocess.TimeoutExpired:
+            clean_job(out, stem)
+            raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
+        problems = log_problems(log.read_text(encoding="utf-8", errors="replace")) if log.is_file() else []
+        if proc.returncode == 0 and not problems:
+            break
+        # a stale or broken .aux (or latexmk's database) from an earlier run makes every later
+        # run fail: remove this job's auxiliary files (the log is kept) and try once from scratch
+        clean_job(out, stem)
+    if proc.returncode != 0 or problems:
+        first = problems[0] if problems else f"latexmk exited with {proc.returncode}"
+        raise LatexError(f"LaTeX failed on {name} ({first[:160]}): see {log}", log)
+    return out / f"{stem}.pdf"
+
+
+#: What a LaTeX run leaves beside the document that a later run reads back (the log is kept).
+AUX_SUFFIXES = (".aux", ".toc", ".out", ".lof", ".lot", ".nav", ".snm", ".bbl", ".blg", ".fls", ".fdb_latexmk",
+                ".synctex.gz")
+
+
+def clean_job(out: Path, stem: str) -> list[Path]:
+    """Remove the auxiliary files of the job ``stem`` in ``out`` (what would make the next run
+    fail again); returns those removed.  Symbolic links are removed, never followed."""
+    removed = []
+    for suffix in AUX_SUFFIXES:
+        path = out / f"{stem}{suffix}"
+        if os.path.lexists(path) and not path.is_dir():
+            path.unlink()
+            removed.append(path)
+    return removed
+
+
+def compile_all(out: Path, names: list[str], jobs: int | None = None, progress=None) -> list[Path]:
+    """Compile the documents (in parallel); the first failure raises :class:`LatexError`.
+    ``progress`` (a :class:`quasicentral.progress.Progress` callback) is told of each PDF."""
+    from quasicentral.progress import notify
+
+    names = [n for n in names if n != VERSIONS_FILE]
+    jobs = jobs or min(len(names), os.cpu_count() or 1) or 1
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(compile_one, out, n) for n in names]
+        pdfs = []
+        notify(progress, 0, len(names), "", 0, "PDFs")
+        for name, f in zip(names, futures):
+            pdfs.append(f.result())
+            notify(progress, len(pdfs), len(names), name, 0, "PDFs")
+        return pdfs

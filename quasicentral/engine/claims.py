@@ -1,0 +1,141 @@
+"""Claims: the printed relations paired with a derivation's result, as pairs of expressions
+that should be equal on the declared domain.
+
+How a derivation's result meets the printed form is its :class:`~quasicentral.engine.registry.Mode`:
+solved for the same unknowns and compared (``solve``), checked on the derived model
+(``substitute``), compared as bare expressions (``expression``), or a quantity that must
+vanish under the printed condition (``condition``).  :class:`CannotCompare` says, as a
+:class:`~quasicentral.engine.reasons.Reason`, why the two cannot be paired.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from quasicentral.engine.reasons import Code, Reason
+from quasicentral.engine.registry import Mode, as_list
+
+
+@dataclass(frozen=True)
+class Claim:
+    printed: sp.Expr
+    derived: sp.Expr
+    quantity: Reason  # what the two values are (a Q_… reason)
+    scale: sp.Expr | None = None  # magnitude the difference is measured against
+
+
+class CannotCompare(Exception):
+    """The printed relations cannot be paired with the derivation's result (``reason``)."""
+
+    def __init__(self, reason: Reason):
+        super().__init__(reason.code.value)
+        self.reason = reason
+
+
+def doit_derivatives(e):
+    return e.replace(lambda a: isinstance(a, sp.Derivative), lambda a: a.doit()) if e.has(sp.Derivative) else e
+
+
+def solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
+    """The value of ``unknown`` that ``rel`` states (None where it states none, or several)."""
+    if not isinstance(rel, sp.Eq):
+        return None
+    if rel.lhs == unknown:
+        return rel.rhs
+    if rel.rhs == unknown:
+        return rel.lhs
+    dummy = sp.Dummy("u")
+    expr = (rel.lhs - rel.rhs).xreplace({unknown: dummy})
+    if dummy not in expr.free_symbols:
+        return None
+    coeff = sp.diff(expr, dummy)
+    if dummy in coeff.free_symbols:
+        sols = sp.solve(expr, dummy)
+        return sols[0] if len(sols) == 1 else None
+    return sp.cancel(-expr.xreplace({dummy: 0}) / coeff) if coeff.is_polynomial() else -expr.xreplace({dummy: 0}) / coeff
+
+
+def decided(rel: sp.Basic) -> sp.Basic:
+    """A printed equation whose two sides are the same expression (True), or two numbers (sympy
+    decides), as sympy's ``Eq`` would give it; any other relation as it is (a transcription
+    keeps its equations undecided: :func:`quasicentral.notation.symbols.printed_eq`)."""
+    if isinstance(rel, sp.Eq):
+        if rel.lhs == rel.rhs:
+            return sp.true
+        if rel.lhs.is_number and rel.rhs.is_number:
+            return sp.Eq(rel.lhs, rel.rhs)
+    return rel
+
+
+def _truth(rel) -> None:
+    if rel in (sp.true, sp.false):
+        raise CannotCompare(Reason.of(Code.EVALUATES_TO, value=str(rel)))
+
+
+def claims_for(printed: list[sp.Basic], derivation, result) -> list[Claim]:
+    """Pair the printed relations with the derivation's result; :class:`CannotCompare` says
+    why they cannot be."""
+    mode = derivation.mode
+    printed = [decided(rel) for rel in printed]
+    if mode is Mode.CONDITION:
+        return _condition_claims(printed, result)
+    if mode is Mode.SUBSTITUTE:
+        return _model_claims(printed, dict(result or {}))
+    derived = [doit_derivatives(d) if isinstance(d, sp.Basic) else d for d in as_list(result)]
+    printed = [doit_derivatives(p) for p in printed]
+    unknowns = derivation.unknowns
+    if len(derived) == 1 and len(printed) > 1:
+        # one derived relation, printed in several rows (a chain of equal forms): each row is
+        # compared with it
+        derived = derived * len(printed)
+        unknowns = unknowns * len(printed) if unknowns is not None and len(unknowns) == 1 else unknowns
+    if len(derived) != len(printed):
+        raise CannotCompare(Reason.of(Code.RELATION_COUNT, printed=len(printed), derived=len(derived)))
+    if mode is Mode.EXPRESSION:
+        return [Claim(p, d, Reason(Code.Q_VALUE)) for p, d in zip(printed, derived)]
+    return _solved_claims(printed, derived, unknowns or tuple(d.lhs for d in derived))
+
+
+def _condition_claims(printed: list, result) -> list[Claim]:
+    if not all(isinstance(r, sp.Eq) for r in printed):
+        raise CannotCompare(Reason(Code.CONDITION_NOT_EQUATION))
+    cond = {r.lhs: r.rhs for r in printed}
+    q = doit_derivatives(result)
+    return [Claim(q.subs(cond), sp.Integer(0), Reason.of(Code.Q_UNDER_CONDITION, quantity=sp.sstr(q)), sp.Abs(q))]
+
+
+def _model_claims(printed: list, model: dict) -> list[Claim]:
+    out = []
+    for rel in printed:
+        if isinstance(rel, sp.Eq):
+            lhs = doit_derivatives(doit_derivatives(rel.lhs).subs(model))
+            rhs = doit_derivatives(doit_derivatives(rel.rhs).subs(model))
+            out.append(Claim(lhs - rhs, sp.Integer(0), Reason(Code.Q_RESIDUAL), sp.Abs(lhs) + sp.Abs(rhs)))
+        elif isinstance(rel, sp.Basic) and rel in (sp.true, sp.false):
+            _truth(rel)
+        else:
+            out.append(Claim(doit_derivatives(rel.subs(model)), sp.Integer(0), Reason(Code.Q_EXPRESSION)))
+    return out
+
+
+def _solved_claims(printed: list, derived: list, unknowns) -> list[Claim]:
+    out = []
+    for p, d, unk in zip(printed, derived, unknowns):
+        unk = doit_derivatives(unk)
+        _truth(p)
+        pv, dv = solve_for(p, unk), solve_for(d, unk)
+        if dv is None:
+            raise CannotCompare(Reason.of(Code.CANNOT_SOLVE, unknown=sp.sstr(unk)))
+        if pv is not None:
+            out.append(Claim(pv, dv, Reason.of(Code.Q_UNKNOWN, unknown=sp.sstr(unk))))
+        elif isinstance(p, sp.Eq):
+            # not solvable for the unknown (absent, or several branches): the printed relation
+            # must still hold wherever the derived one does
+            lhs, rhs = p.lhs.xreplace({unk: dv}), p.rhs.xreplace({unk: dv})
+            out.append(Claim(lhs - rhs, sp.Integer(0), Reason.of(Code.Q_PRINTED_RESIDUAL, unknown=sp.sstr(unk)),
+                             sp.Abs(lhs) + sp.Abs(rhs)))
+        else:
+            raise CannotCompare(Reason.of(Code.NOT_EQUATION_FOR, unknown=sp.sstr(unk)))
+    return out

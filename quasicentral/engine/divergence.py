@@ -1,0 +1,115 @@
+"""Divergent printed forms, seen in a few evaluations: an integral whose integrand is not
+integrable at an end of its path, a series whose terms grow.  Each returns a
+:class:`~quasicentral.engine.reasons.Reason` (or None where no divergence is seen)."""
+
+from __future__ import annotations
+
+import mpmath
+import sympy as sp
+
+from quasicentral.engine.reasons import Code, Reason
+from quasicentral.notation import bridge
+from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
+
+#: the growth order q in |f| ~ |x − e|^(−q) from which an end is not integrable (1, less a margin)
+NOT_INTEGRABLE = 1 - 1e-3
+#: ... and at an infinite end, |f| ~ |x|^(−q) with q at most this is not integrable
+NOT_DECAYING = 1 + 1e-3
+_ERRORS = (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, AttributeError)
+
+
+#: where an infinite end is probed: x = 10^10 … 10^19 (an oscillating integrand changes sign there)
+FAR = tuple(10 ** k for k in range(10, 20))
+
+
+def _decay(f, values, sign) -> object | None:
+    """The decay order q of |f| ~ |x|^(−q) far out (None unless it is at most
+    :data:`NOT_DECAYING` at every probe of :data:`FAR`, with one sign throughout and
+    |f|·|x|^NOT_DECAYING never falling: a tail that is not integrable)."""
+    xs = [sign * mpmath.mpf(x) for x in FAR]
+    fs = [f(x, *values) for x in xs]
+    if not all(isinstance(v, mpmath.mpf) and mpmath.isfinite(v) and v != 0 for v in fs):
+        return None
+    if len({v > 0 for v in fs}) != 1:
+        return None
+    weighted = [abs(v) * abs(x) ** NOT_DECAYING for v, x in zip(fs, xs)]
+    if any(b < a for a, b in zip(weighted, weighted[1:])):
+        return None
+    return mpmath.log(abs(fs[0]) / abs(fs[-1])) / mpmath.log(abs(xs[-1] / xs[0]))
+
+
+def integral_divergence(expr: sp.Expr, pt: dict) -> Reason | None:
+    """Why an integral of ``expr`` diverges at the point ``pt`` (None if none is seen): at a
+    finite end where the integrand is unbounded, its growth order q in |f| ~ |x − e|^(−q) is
+    estimated from two distances (1e-10, 1e-20) at 40 digits, q ≥ 1 − 1e-3 not being
+    integrable; at an infinite end, from |f| at 1e10 and 1e20: a decay no faster than 1/x is
+    not integrable."""
+    for integral in expr.atoms(sp.Integral):
+        if len(integral.limits) != 1 or len(integral.limits[0]) != 3:
+            continue
+        x, a, b = integral.limits[0]
+        outer = tuple(sorted(integral.function.free_symbols - {x}, key=str))
+        if any(s not in pt for s in outer):
+            continue
+        try:
+            with mpmath.workdps(40):
+                found = _integral_end(integral.function, x, outer, [sp.sympify(e).xreplace(pt) for e in (a, b)], pt)
+        except _ERRORS:
+            continue
+        if found is not None:
+            return found
+    return None
+
+
+def _integral_end(function, x, outer, ends, pt) -> Reason | None:
+    # compiled once for every point (mp_function remembers it), the point's values as arguments
+    f = bridge.mp_function(function, (x,) + outer)
+    values = [bridge.mp_value(pt[s], 40) for s in outer]
+    finite = [bridge.mp_value(e, 40) if e not in (sp.oo, -sp.oo) else None for e in ends]
+    for i, (end, inward) in enumerate(((ends[0], 1), (ends[1], -1))):
+        if end in (sp.oo, -sp.oo):
+            q = _decay(f, values, 1 if end is sp.oo else -1)
+            if q is not None:
+                return Reason.of(Code.INTEGRAND_GROWS, variable=str(x), end=("∞" if end is sp.oo else "−∞"),
+                                 order=mpmath.nstr(-q, 3))
+            continue
+        e = finite[i]
+        if mpmath.im(e) != 0:
+            continue
+        other = finite[1 - i]
+        direction = inward if other is None or other >= e else -inward
+        if other is None:
+            direction = 1 if ends[1 - i] is sp.oo else -1
+        g1 = abs(f(e + direction * mpmath.mpf("1e-10"), *values))
+        g2 = abs(f(e + direction * mpmath.mpf("1e-20"), *values))
+        if not (mpmath.isfinite(g1) and mpmath.isfinite(g2)) or g1 == 0 or g2 <= g1:
+            continue
+        q = mpmath.log(g2 / g1) / mpmath.log(mpmath.mpf(10) ** 10)
+        if q >= NOT_INTEGRABLE:
+            return Reason.of(Code.INTEGRAND_GROWS, variable=str(x), end=mpmath.nstr(e, 8), order=mpmath.nstr(q, 3))
+    return None
+
+
+def series_divergence(expr: sp.Expr, pt: dict) -> Reason | None:
+    """Why an infinite series of ``expr`` diverges at ``pt`` (None if none is seen): the ratio
+    test, |a(n+1)/a(n)| at n = 100 and 200 (30 digits), both above 1 + 1e-3 and not falling."""
+    for sm in expr.atoms(sp.Sum):
+        if len(sm.limits) != 1 or sm.limits[0][2] is not sp.oo:
+            continue
+        var = sm.limits[0][0]
+        term = sm.function.xreplace(pt)
+        if term.free_symbols - {var}:
+            continue
+        try:
+            with time_limit(2.0) as limit:
+                r = [abs(sp.N(term.subs(var, k + 1) / term.subs(var, k), 30)) for k in (100, 200)]
+        except TimeLimitExceeded as exc:
+            if limit is None or not limit.owns(exc):
+                raise
+            continue
+        except _ERRORS:
+            continue
+        if all(x.is_number and x.is_finite for x in r) and r[0] > 1 + 1e-3 and r[1] >= r[0] * (1 - 1e-6):
+            return Reason.of(Code.TERMS_GROW, variable=str(var), ratio100=str(sp.N(r[0], 4)),
+                             ratio200=str(sp.N(r[1], 4)))
+    return None

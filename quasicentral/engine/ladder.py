@@ -1,0 +1,293 @@
+"""The numeric stage: a claim evaluated at many in-domain points on a precision ladder.
+
+Every point is evaluated on the first rung; the higher rungs where the first does not agree (a
+difference must prove stable) and at the first few points (a true but tiny difference, below
+the first rung's tolerance, shows at every point of the domain).  Agreement at a rung means
+|p − d| ≤ 10^(−0.6·dps)·scale, the scale being the largest of |p|, |d|, the claim's own scale
+and the magnitudes of the terms of each side — so that a side that is exactly zero (a
+condition at its root) is compared with the size of what cancels there, not with itself.  A
+disagreement must be resolved on no rung and stable from rung to rung; anything else is noise
+of an ill-conditioned evaluation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from enum import Enum
+from functools import lru_cache
+
+import mpmath
+import sympy as sp
+
+from quasicentral.engine.claims import Claim
+from quasicentral.engine.options import Options
+from quasicentral.engine.reasons import Code, Reason
+from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, Verified, Witness
+from quasicentral.engine.witness import witness_at
+from quasicentral.notation import bridge
+from quasicentral.notation.domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
+from quasicentral.notation.symbols import SymbolTable
+
+#: the exceptions an evaluation at one point may raise: the point drops out
+EVALUATION_ERRORS = (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError,
+                     mpmath.libmp.NoConvergence, AttributeError, NotImplementedError, RecursionError)
+#: the most terms of a side whose magnitudes make its scale
+SCALE_TERMS = 64
+
+
+class PointClass(Enum):
+    AGREE = "agree"
+    DISAGREE = "disagree"
+    UNSTABLE = "unstable"
+
+
+@dataclass(frozen=True)
+class Rung:
+    """One point on one rung: both values, their difference and the magnitudes it is judged by."""
+
+    printed: object
+    derived: object
+    diff: object
+    magnitude: object  # max(|p|, |d|, |scale|)
+    terms: object = None  # the terms' magnitude, computed only where the values do not agree
+
+
+def _jet_ranges(syms) -> dict:
+    return {s: POSITIVE_JET_RANGE if s.is_positive else JET_RANGE for s in syms if bridge.is_jet(s)}
+
+
+def prepared(e: sp.Basic | None, defs: dict) -> sp.Basic | None:
+    """A claim's side ready for numbers: definitions applied, infinite sums closed, the
+    motion's functions as jets."""
+    if e is None:
+        return None
+    return bridge.to_jets(bridge.close_infinite_sums(substitute_definitions(e, defs)))
+
+
+def terms_of(e: sp.Basic) -> list:
+    """The terms whose magnitudes bound the rounding of ``e``: a sum's terms, a product's
+    distributed over its first sum ((a − b)·c → a·c, −b·c), up to :data:`SCALE_TERMS`."""
+    out, todo = [], [e]
+    while todo and len(out) + len(todo) <= SCALE_TERMS:
+        t = todo.pop(0)
+        if isinstance(t, sp.Add):
+            todo[:0] = list(t.args)
+        elif isinstance(t, sp.Mul) and any(isinstance(f, sp.Add) for f in t.args):
+            first = next(f for f in t.args if isinstance(f, sp.Add))
+            rest = sp.Mul(*[f for f in t.args if f is not first])
+            todo[:0] = [rest * a for a in first.args]
+        else:
+            out.append(t)
+    return out + todo
+
+
+@lru_cache(maxsize=1024)
+def _magnitude_of_terms(e: sp.Basic) -> sp.Basic:
+    return sp.Add(*[sp.Abs(t) for t in terms_of(e)])
+
+
+@lru_cache(maxsize=64)
+def tolerance(exponent: float, dps: int):
+    """10^(−exponent·dps), a threshold: in double precision (once per rung, not per comparison)."""
+    with mpmath.workprec(53):
+        return mpmath.mpf(10) ** (-exponent * dps)
+
+
+def agrees(diff, ref, dps: int, opts: Options) -> bool:
+    return diff <= tolerance(opts.agreement_exponent, dps) * ref
+
+
+class _Evaluator:
+    """The claim's sides compiled once; values at a point on a rung (derived values remembered
+    per expression, exact point and digits: an erratum's printed and corrected forms share them)."""
+
+    def __init__(self, p, d, scale, args):
+        self.p, self.d, self.args = p, d, args
+        self.fp = bridge.rung_function(p, args)
+        self.fs = bridge.rung_function(scale, args) if scale is not None else None
+        self.d_args = tuple(sorted(d.free_symbols, key=str))
+        self._terms = None
+
+    def rung(self, pt: dict, dps: int) -> Rung:
+        with mpmath.workdps(dps):
+            vals = [bridge.mp_value(pt[a], dps) for a in self.args]
+            pv = +self.fp(*vals)
+            dv = derived_value(self.d, self.d_args, tuple(pt[a] for a in self.d_args), dps)
+            mag = max(abs(pv), abs(dv))
+            if self.fs is not None:
+                mag = max(mag, abs(+self.fs(*vals)))
+            diff = abs(pv - dv)
+            if not (mpmath.isfinite(diff) and mpmath.isfinite(mag)):
+                raise ValueError("not finite")
+        return Rung(pv, dv, diff, mag)
+
+    def with_terms(self, r: Rung, pt: dict, dps: int) -> Rung:
+        """``r`` with the magnitude of each side's terms (where |p|, |d| alone do not agree)."""
+        if self._terms is None:
+            self._terms = bridge.rung_function(_magnitude_of_terms(self.p) + _magnitude_of_terms(self.d), self.args)
+        with mpmath.workdps(dps):
+            try:
+                t = +self._terms(*[bridge.mp_value(pt[a], dps) for a in self.args])
+                t = abs(t) if mpmath.isfinite(t) else None
+            except EVALUATION_ERRORS:
+                t = None
+        return Rung(r.printed, r.derived, r.diff, r.magnitude, t)
+
+
+@lru_cache(maxsize=50_000)
+def derived_value(d: sp.Basic, d_args: tuple, values: tuple, dps: int):
+    """The derived side's value at an exact point (hashed structurally), at ``dps`` digits."""
+    f = bridge.rung_function(d, d_args)
+    with mpmath.workdps(dps):
+        return +f(*[bridge.mp_value(v, dps) for v in values])
+
+
+def reference(r: Rung, floor) -> object:
+    """What a rung's difference is judged against: the values', the claim's and the terms'
+    magnitudes, floored."""
+    ref = max(r.magnitude, floor)
+    if r.terms is not None:
+        ref = max(ref, r.terms)
+    return ref or mpmath.mpf(1)
+
+
+def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
+    """Each point as (class, relative difference).  All in mpmath: values far beyond the
+    double range (factorials, 2^(n²)) must not overflow to inf.
+
+    Agreement: |p − d| ≤ 10^(−0.6·dps)·reference on every rung evaluated.  A true difference:
+    resolved on no rung, and stable (within ``opts.stable_within``) from the first rung to the
+    last.  The relative difference reported is |p − d| / max(|p|, |d|), floored at
+    ``opts.scale_floor`` of the median magnitude."""
+    ladder = opts.ladder
+    mags = sorted(abs(r[-1].magnitude) for _, r in rows)
+    floor = mags[len(mags) // 2] * mpmath.mpf(opts.scale_floor) if mags else mpmath.mpf(0)
+    out = []
+    for _, row in rows:
+        ok = [agrees(r.diff, reference(r, floor), dps, opts) for dps, r in zip(ladder, row)]
+        lo, hi = row[0].diff, row[-1].diff
+        rel = float(min(hi / (max(row[-1].magnitude, floor) or mpmath.mpf(1)), mpmath.mpf(1e300)))
+        if all(ok):
+            out.append((PointClass.AGREE, rel))
+        elif len(row) > 1 and not any(ok) and abs(lo - hi) <= mpmath.mpf(opts.stable_within) * hi:
+            out.append((PointClass.DISAGREE, rel))
+        else:
+            out.append((PointClass.UNSTABLE, rel))
+    return out
+
+
+def _refuted_already(rows, opts) -> bool:
+    """Enough points that already disagree for good."""
+    if len(rows) < opts.early_stop_after:
+        return False
+    # a point can disagree only if its first rung does not agree even against its own magnitude
+    # (the scale floor only raises the reference): most runs stop here, without classifying
+    # every row again at every point
+    candidates = sum(len(r) > 1 and not (r[0].magnitude and agrees(r[0].diff, reference(r[0], 0), opts.ladder[0], opts))
+                     for _, r in rows)
+    return (candidates >= opts.early_stop_disagreements
+            and sum(k is PointClass.DISAGREE for k, _ in classify(rows, opts)) >= opts.early_stop_disagreements)
+
+
+def _parameters(pt: dict) -> dict[str, str]:
+    return {str(k): sp.sstr(v) for k, v in sorted(pt.items(), key=lambda kv: str(kv[0]))}
+
+
+def _divergence(p: sp.Basic, pts: list, claim: Claim, opts: Options, before_numbers: bool) -> Verdict | None:
+    """A printed integral that diverges (integrand ~ |x − e|^(−q), q ≥ 1, or decaying no faster
+    than 1/x at an infinite end), or a printed series whose terms grow, is refuted with that
+    reason: its quadratures or partial sums only return noise.  Where the numbers have failed,
+    one of the first four points showing it is enough; ``before_numbers``, the integrals alone
+    are tested (a series' test sums in sympy) and every one of the four points must show it."""
+    from quasicentral.engine.divergence import integral_divergence, series_divergence
+
+    if not (p.has(sp.Integral) or (not before_numbers and p.has(sp.Sum))):
+        return None
+    seen = ((pt, integral_divergence(p, pt) or (None if before_numbers else series_divergence(p, pt)))
+            for pt in pts[:4])
+    if before_numbers:
+        seen = list(seen)
+        if not seen or not all(why for _, why in seen):
+            return None
+    pt, why = next(((pt, why) for pt, why in seen if why), (None, None))
+    if why is None:
+        return None
+    w = Witness(parameters=_parameters(pt), printed="divergent", corrected="", digits=0, certified=False,
+                quantity=claim.quantity, relative_difference="inf", working_digits=opts.ladder[-1])
+    return Refuted(Method.NUMERIC, Reason.of(Code.DIVERGES, why=why), len(pts), opts.ladder, witness=w)
+
+
+def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: SymbolTable) -> Verdict:
+    """The claim at in-domain points on the ladder: verified, refuted with a witness, or
+    inconclusive with the reason."""
+    defs = domain.definition_map(table)
+    p, d, scale = prepared(claim.printed, defs), prepared(claim.derived, defs), prepared(claim.scale, defs)
+    syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
+    try:
+        integral = p.has(sp.Integral) or d.has(sp.Integral)
+        count = min(opts.points, opts.integral_points) if integral else opts.points
+        pts = Sampler(domain, table, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(count)
+    except KeyError as exc:
+        return Inconclusive(Method.NONE, Reason.of(Code.NO_RANGE, symbol=str(exc.args[0])))
+    if len(pts) < max(3, count // 2):
+        return Inconclusive(Method.NONE, Reason(Code.TOO_FEW_POINTS))
+    args = tuple(sorted(syms, key=str))
+    ev = _Evaluator(p, d, scale, args)
+    # an endpoint where the printed integrand is not integrable is seen in a few evaluations,
+    # where its quadratures would cost seconds and return noise
+    early_divergence = _divergence(p, pts, claim, opts, before_numbers=True)
+    if early_divergence is not None:
+        return early_divergence
+    rows, early, first_error = _evaluate(ev, pts, opts)
+    if not early and len(rows) < max(3, (4 * len(pts) + 4) // 5):
+        # a point where a side cannot be evaluated is not evidence of agreement: at most a
+        # fifth of them may drop out
+        return _divergence(p, pts, claim, opts, False) or Inconclusive(
+            Method.NONE, Reason.of(Code.TOO_FEW_EVALUATED, n=len(rows), of=len(pts), error=first_error))
+    return _judge(rows, pts, claim, p, d, opts)
+
+
+def _evaluate(ev: _Evaluator, pts: list, opts: Options):
+    """The rows of the ladder (per point, its rungs), whether a refutation stopped the run
+    early, and the first evaluation error met ('' for none)."""
+    rows, first_error = [], ""
+    for i_pt, pt in enumerate(pts):
+        if i_pt >= opts.early_stop_after and _refuted_already(rows, opts):
+            return rows, True, first_error  # a refutation stands; further points would only cost time
+        try:
+            row = [ev.rung(pt, opts.ladder[0])]
+            if i_pt < opts.confirm_points or not agrees(row[0].diff, row[0].magnitude, opts.ladder[0], opts):
+                row += [ev.rung(pt, dps) for dps in opts.ladder[1:]]
+            if not all(agrees(r.diff, r.magnitude, dps, opts) for dps, r in zip(opts.ladder, row)):
+                row = [ev.with_terms(r, pt, dps) for dps, r in zip(opts.ladder, row)]
+        except EVALUATION_ERRORS as exc:
+            first_error = first_error or f"{type(exc).__name__}: {exc}"[:160]
+            continue
+        rows.append((pt, row))
+    return rows, False, first_error
+
+
+def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
+    disagree, unstable = [], 0
+    for (kind, rel), (pt, row) in zip(classify(rows, opts), rows):
+        if kind is PointClass.DISAGREE:
+            disagree.append((rel, pt, row))
+        elif kind is PointClass.UNSTABLE:
+            unstable += 1
+    n, ladder = len(rows), opts.ladder
+    if disagree:
+        rel, pt, row = max(disagree, key=lambda r: r[0])
+        witness = witness_at(claim.quantity, p, d, pt, (row[-1].printed, row[-1].derived),
+                             (row[0].printed, row[0].derived), ladder[-1], opts, rel)
+        method = Method.CERTIFIED if witness.certified else Method.NUMERIC
+        return Refuted(method, Reason.of(Code.DISAGREES, count=len(disagree), points=n, relative=rel), n, ladder,
+                       witness=witness)
+    if unstable:
+        return _divergence(p, pts, claim, opts, False) or Inconclusive(
+            Method.NUMERIC, Reason.of(Code.UNSTABLE, n=unstable, of=n), n, ladder)
+    vacuous = all(r[-1].magnitude == 0 for _, r in rows)
+    confirmed = sum(len(r) == len(ladder) for _, r in rows)
+    return Verified(Method.NUMERIC, Reason.of(Code.AGREES, n=n, of=len(pts),
+                                              digits=math.floor(opts.agreement_exponent * ladder[0]),
+                                              confirmed=confirmed, top=ladder[-1], vacuous=vacuous), n, ladder)

@@ -1,0 +1,75 @@
+"""A record's note with its ``{witness…}`` placeholders filled from the witness of the run —
+per language, its numbers formatted as the language writes them (the JSON documents: English).
+
+>>> from quasicentral.engine.verdict import Witness
+>>> w = Witness({"t": "3/2"}, "1.5", "2.25", 3, True, relative_difference="3.333e-01")
+>>> render_note("at t = {witness.parameters.t}: {witness.printed}", w, "cs")
+'at t = 1,5000000: 1,5'
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from quasicentral.engine.wording import Plain
+
+_PLACEHOLDER = re.compile(r"\{witness(?:\.(printed|corrected|relative_difference|quantity|parameters\.[A-Za-z_0-9]+))?\}")
+PARAMETER_DIGITS = 8  # significant digits of a witness's parameter in prose
+
+
+def parameters_text(w, lang: str = "en") -> dict[str, str]:
+    """The witness's exact parameters as short decimals for prose (integers as they are)."""
+    style = Plain(lang)
+    out = {}
+    for k, v in w.parameters.items():
+        val = sp.sympify(v, rational=True) if not isinstance(v, sp.Basic) else v
+        out[k] = v if val.is_Rational and val.q == 1 else style.decimal(sp.sstr(sp.N(val, PARAMETER_DIGITS)))
+    return out
+
+
+_SENTENCE = {
+    "en": ("at {at} the printed {q} is {p}, the derived {c} (relative difference {r}; {cert})",
+           "certified", "not certified",
+           "no numeric witness (the printed relation is dimensionally inconsistent)"),
+    "cs": ("v bodě {at} je vytištěná hodnota ({q}) {p}, odvozená {c} (relativní rozdíl {r}; {cert})",
+           "certifikováno", "necertifikováno",
+           "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)"),
+}
+
+
+def witness_sentence(w, lang: str = "en") -> str:
+    """The witness as one sentence, from its record only."""
+    words = _SENTENCE.get(lang, _SENTENCE["en"])
+    if w is None:
+        return words[3]
+    from quasicentral.engine.wording import render
+
+    style = Plain(lang)
+    at = ", ".join(f"{k} = {v}" for k, v in parameters_text(w, lang).items())
+    return words[0].format(at=at, q=render(w.quantity, lang), p=style.decimal(w.printed),
+                           c=style.decimal(w.corrected), r=style.decimal(w.relative_difference),
+                           cert=words[1] if w.certified else words[2])
+
+
+def render_note(note: str, w, lang: str = "en") -> str:
+    """``note`` with its ``{witness…}`` placeholders filled from the witness ``w`` ('—' where
+    the witness has no such value)."""
+    style = Plain(lang)
+
+    def fill(m: re.Match) -> str:
+        field = m.group(1)
+        if field is None:
+            return witness_sentence(w, lang)
+        if w is None:
+            return "—"
+        if field.startswith("parameters."):
+            return parameters_text(w, lang).get(field.split(".", 1)[1], "—")
+        if field == "quantity":
+            from quasicentral.engine.wording import render
+
+            return render(w.quantity, lang)
+        return style.decimal(str(getattr(w, field)))
+
+    return _PLACEHOLDER.sub(fill, note)

@@ -1,0 +1,296 @@
+"""mpmath at any precision: expressions compiled once (lambdify through one printer and one
+table of function names), definite integrals by quadrature (python-flint's Gauss–Legendre
+first, mpmath's tanh–sinh where its ball does not hold every working bit), and the rung
+functions of a precision ladder (balls first, mpmath where a ball does not suffice).
+Precision is whatever local ``mpmath.workdps`` the caller opens — nothing here sets it.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from types import MappingProxyType
+
+import mpmath
+import sympy as sp
+from sympy.printing.pycode import MpmathPrinter
+
+from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_mpf, ball_function, ball_value,
+                                         compile_path, flint_precision, mp_to_acb)
+from quasicentral.notation.integrals import infinite_end, prepare
+
+QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
+QUAD_PIECES_GAIN = 100  # ... and the least gain in its error estimate for which it cuts further
+
+
+def _quad(f, interval, singular: bool = False):
+    """mpmath.quad with guard digits.  An integrand singular at an endpoint (1/√(1 − ζ²))
+    loses about half the working digits to cancellation in 1 − ζ next to it, so there
+    (``singular``, or a non-finite value at an end) the precision is doubled; elsewhere ten
+    guard digits suffice."""
+    dps = mpmath.mp.dps
+    a, b = interval
+    unbounded = not (mpmath.isfinite(a) and mpmath.isfinite(b))
+    for end in (a, b):
+        if not mpmath.isfinite(end):
+            continue
+        try:
+            with mpmath.workdps(15):
+                val = f(end)
+            singular = singular or not mpmath.isfinite(val)
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError):
+            singular = True
+    if unbounded:  # tanh–sinh maps a half-line (or the line) itself; no cutting into pieces
+        with mpmath.workdps(2 * dps if singular else dps + 10):
+            return +mpmath.quad(f, [a, b])
+    # tanh–sinh on one interval misses oscillations over a long path (∫ sin² z … dz over
+    # twenty radians is off in the 10th digit at 30 digits): where its error estimate exceeds
+    # the working precision, the path is cut into more pieces — while cutting helps.  Where
+    # four times the pieces do not gain QUAD_PIECES_GAIN in the estimate, the trouble is not
+    # the path's length but a singularity inside it (a branch point of a root that turns
+    # negative): more pieces would only cost time, and the value stands as it is, for the
+    # precision ladder to judge
+    with mpmath.workdps(2 * dps if singular else dps + 10):
+        tol = mpmath.mpf(10) ** -dps
+        pieces, before = 1, None
+        while True:
+            nodes = mpmath.linspace(a, b, pieces + 1) if pieces > 1 else [a, b]
+            val, err = mpmath.quad(f, nodes, error=True)
+            if err <= tol * max(abs(val), tol) or pieces >= QUAD_MAX_PIECES:
+                break
+            if before is not None and not err * QUAD_PIECES_GAIN <= before:
+                break
+            pieces, before = pieces * 4, err
+    return +val
+
+
+def _ball_first(complete: str | None, incomplete: str | None, fallback):
+    """An elliptic function with mpmath's signature (parameter m = k², as in mpmath, flint and
+    sympy): python-flint's ``acb`` method ``complete`` (one argument, m) or ``incomplete`` (φ, m)
+    — C, 20–50 times faster than mpmath's Carlson forms at 30–60 digits — where every argument
+    is real with m < 1, so that the value is real off every branch cut, and its ball holds every
+    bit of the working precision; else mpmath's own ``fallback``."""
+    def f(*args):
+        name = complete if len(args) == 1 else incomplete if len(args) == 2 else None
+        vals = [mpmath.mpmathify(a) for a in args]
+        if name and all(isinstance(v, mpmath.mpf) and mpmath.isfinite(v) for v in vals) and vals[-1] < 1:
+            import flint
+
+            prec = mpmath.mp.prec
+            with flint_precision(prec + GUARD_BITS):
+                r = getattr(flint.acb, name)(*[mp_to_acb(v) for v in vals])
+                if r.is_finite() and r.imag == 0 and r.real.rel_accuracy_bits() >= prec:
+                    return +arb_to_mpf(r.real.mid())
+        return fallback(*args)
+    return f
+
+
+#: sympy name -> mpmath-callable function.  One table for the whole project.  Elliptic functions
+#: take the parameter m = k².
+MPMATH_NAMES = MappingProxyType({
+    "elliptic_k": _ball_first("elliptic_k", None, mpmath.ellipk),
+    "elliptic_f": _ball_first(None, "elliptic_f", mpmath.ellipf),
+    "elliptic_e": _ball_first("elliptic_e", "elliptic_e_inc", mpmath.ellipe),
+    "elliptic_pi": mpmath.ellippi,  # real only for some n, φ, m: mpmath decides
+    "quad": _quad,
+})
+
+
+class _Printer(MpmathPrinter):
+    """sympy's mpmath printer, with the terms of a sum and the factors of a product in the
+    order of the expression's arguments (sympy's own order, the same in every process) instead
+    of sorted anew for display — a third of lambdify's time went into that sort; the value is
+    the same sum, rounded at the last working bit — and sinc as mpmath's ``sinc`` (1 at 0)
+    instead of sin(x)/x, which fails there."""
+
+    _default_settings = {**MpmathPrinter._default_settings, "order": "none"}
+
+    def _print_sinc(self, e):
+        return f"sinc({self._print(e.args[0])})"
+
+
+def mp_lambdify(args, expr, modules=None):
+    """``sympy.lambdify`` for mpmath (the table above, then mpmath) through :class:`_Printer`,
+    without the docstring: printing the expression into it costs a fifth of lambdify's time,
+    and nobody reads it."""
+    modules = modules or [dict(MPMATH_NAMES), "mpmath"]
+    # the settings lambdify gives its own printer: the names of the tables' functions kept as
+    # they are, looked up in the namespace at call time
+    names = {k: k for m in modules if isinstance(m, dict) for k in m}
+    printer = _Printer({"fully_qualified_modules": False, "inline": True, "allow_unknown_functions": True,
+                        "user_functions": names})
+    return sp.lambdify(args, expr, modules=modules, printer=printer, docstring_limit=0)
+
+
+def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
+    """Replace each infinite ``Sum`` by the closed form sympy finds for it (lambdify cannot
+    evaluate an infinite sum, and ``mpmath.nsum`` loses accuracy near the radius of
+    convergence); a sum sympy cannot close stays, and its evaluation then fails honestly."""
+    # replace() walks and rebuilds the whole tree: only where there is a sum to close
+    return expr.replace(lambda e: isinstance(e, sp.Sum), _closed_sum) if expr.has(sp.Sum) else expr
+
+
+@lru_cache(maxsize=1024)
+def _closed_sum(sm: sp.Sum) -> sp.Basic:
+    """One infinite sum's closed form (sympy's summation takes ~0.5 s: each is done once)."""
+    if any(lim[2] in (sp.oo, -sp.oo) or lim[1] in (sp.oo, -sp.oo) for lim in sm.limits):
+        done = sm.doit()
+        # a Piecewise closed form whose "otherwise" branch keeps the Sum is fine: the
+        # branch is evaluated only outside the region of convergence
+        return sm if isinstance(done, sp.Sum) else done
+    return sm
+
+
+@lru_cache(maxsize=1024)
+def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
+    """Compile ``expr`` for mpmath (remembered: an erratum's printed and corrected forms share
+    their derived side, and a mutation run compiles it for every mutant).  Each definite integral becomes a
+    call of :func:`_quadrature` (flint's Gauss–Legendre where it reaches the working precision,
+    else mpmath's tanh–sinh)."""
+    table = dict(MPMATH_NAMES)
+    placeholders = {}
+    for integral in _outermost_integrals(expr):
+        name = f"quadrature{len(placeholders)}"
+        outer = tuple(sorted(integral.free_symbols, key=str))
+        table[name] = _quadrature(integral, outer)
+        placeholders[integral] = sp.Function(name)(*outer) if outer else sp.Function(name)(sp.Integer(0))
+    return mp_lambdify(args, expr.xreplace(placeholders), modules=[table, "mpmath"])
+
+
+def _outermost_integrals(expr: sp.Basic) -> list[sp.Integral]:
+    if isinstance(expr, sp.Integral):
+        return [expr] if len(expr.limits) == 1 and len(expr.limits[0]) == 3 else []
+    out: list = []
+    for a in expr.args:
+        out += [i for i in _outermost_integrals(a) if i not in out]
+    return out
+
+
+# integrand evaluations flint may spend before mpmath takes over: at least QUADRATURE_EVALUATIONS,
+# and QUADRATURE_EVALUATIONS_PER_BIT per bit of working precision — Gauss–Legendre needs about
+# 35 per bit on a long oscillating path (4 200 evaluations at 120 bits, 21 300 at 600 for four
+# periods of √(a sin² + b cos²)·sin²), where mpmath's tanh–sinh then takes 20–30 times as long
+QUADRATURE_EVALUATIONS = 20_000
+QUADRATURE_EVALUATIONS_PER_BIT = 50
+def _quadrature(integral: sp.Integral, outer: tuple[sp.Symbol, ...]):
+    """An mpmath-callable value of ``integral`` at the values of ``outer`` (its free symbols),
+    at the precision in force: its parameters computed once, then the sum over its pieces
+    (:func:`prepare`)."""
+    prep = prepare(integral)
+    names = tuple(d for d, _ in prep.params)
+    param_values = mp_lambdify(outer, [e for _, e in prep.params])
+    pieces = [_piece_quadrature(piece, names, singular) for piece, singular in zip(prep.pieces, prep.singular)]
+
+    def value(*vals):
+        # at the precision of a singular path's quadrature: its integrand may cancel a parameter
+        # (cos φ − cos φ₀ next to φ₀)
+        with mpmath.workdps(2 * mpmath.mp.dps + 10):
+            pv = param_values(*vals[:len(outer)])
+        return mpmath.fsum(piece(*pv) for piece in pieces) if len(pieces) > 1 else pieces[0](*pv)
+    return value
+
+
+@lru_cache(maxsize=2048)
+def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singular: bool):
+    """One piece's value at the values of its parameters (one function per piece, so that its
+    values are remembered across every expression it occurs in).  First python-flint's ball
+    integration at the working precision plus guard bits: for an integrand analytic along the
+    path it converges in a few hundred evaluations, and its ball says whether every working bit
+    is right.  Where it does not (no ball form, an endpoint singularity, an infinite end, too
+    much subdivision) mpmath's quadrature (:func:`_quad`) computes the value."""
+    try:
+        ball = compile_path(integral) if not infinite_end(integral) else None
+    except Unsupported:
+        ball = None
+    remembered: dict = {}
+    var, lo, hi = integral.limits[0]
+    compiled: list = []  # mpmath's integrand and limits, compiled when first needed
+
+    def mpmath_form():
+        if not compiled:
+            x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
+            compiled.extend((mp_lambdify((x,) + params, integral.function.xreplace({var: x})),
+                             mp_lambdify(params, lo), mp_lambdify(params, hi)))
+        return compiled
+
+    if ball is None:
+        mpmath_form()  # the only way: compiled now, as every other part of the expression
+
+    def compute(vals):
+        if ball is not None:
+            got = _ball_quadrature(ball, params, vals)
+            if got is not None:
+                return got
+        body, lower, upper = mpmath_form()
+        return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)], singular=singular)
+
+    def value(*vals):
+        # remembered: a printed integral that is also the derived one (or an erratum's printed
+        # and corrected forms) meets the same piece at the same point and precision — about a
+        # quarter of a verification's quadratures.  The piece's parameters are its own dummies
+        # (prepare), so equal keys are the same integral at the same values
+        key = (vals, mpmath.mp.prec)
+        if key not in remembered:
+            if len(remembered) >= QUADRATURES_REMEMBERED:
+                remembered.clear()
+            remembered[key] = compute(vals)
+        return remembered[key]
+    value.computed = remembered  # for tests: what this piece has computed
+    return value
+
+
+QUADRATURES_REMEMBERED = 20_000  # values of one piece kept in one process
+
+
+def _ball_quadrature(ball, outer, vals):
+    """flint's value of a compiled integral, or None where it does not hold every bit of the
+    working precision."""
+    budget = max(QUADRATURE_EVALUATIONS, QUADRATURE_EVALUATIONS_PER_BIT * (mpmath.mp.prec + GUARD_BITS))
+    return ball_value(ball, outer, vals, Work(budget, smooth_ends=True))
+
+
+
+@lru_cache(maxsize=1024)
+def rung_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
+    """``expr`` compiled for the rungs of a precision ladder: a function of mpmath values, like
+    :func:`mp_function`'s, that computes in python-flint balls first — 2 to 100 times faster
+    than mpmath (measured: the more so, the longer the expression), and every bit of the value
+    it returns is guaranteed — and in mpmath (compiled only when first needed) wherever the ball does not hold every working bit or has no ball form (floor, a
+    function known by its numbers only).  An expression with an integral keeps
+    :func:`mp_function`, whose quadratures are ball-first piece by piece and remembered."""
+    if expr.has(sp.Integral):
+        return mp_function(expr, args)
+    try:
+        ball = ball_function(expr)
+    except Unsupported:
+        return mp_function(expr, args)
+
+    def value(*vals):
+        got = ball_value(ball, args, vals, Work())
+        return got if got is not None else mp_function(expr, args)(*vals)
+    return value
+
+
+
+def mp_value(value: sp.Expr, dps: int):
+    """An exact sympy number as an mpmath number at ``dps`` digits (plus guard digits)."""
+    if value.is_Rational:  # most points: rounded as sp.N would, without its evaluation machinery
+        from mpmath.libmp import dps_to_prec, from_rational
+
+        return mpmath.mpf(from_rational(int(value.p), int(value.q), dps_to_prec(dps + 10), "n"))
+    num = sp.N(value, dps + 10)
+    if num.is_real:
+        return mpmath.mpf(sp.Float(num, dps + 10)._mpf_)
+    re, im = num.as_real_imag()
+    return mpmath.mpc(sp.Float(re, dps + 10)._mpf_, sp.Float(im, dps + 10)._mpf_)
+
+
+def mp_eval(expr: sp.Basic, point: dict[sp.Symbol, sp.Expr], dps: int):
+    """Value of ``expr`` at an exact ``point`` with ``dps`` significant digits (local context)."""
+    args = tuple(sorted(expr.free_symbols, key=str))
+    fn = mp_function(expr, args)
+    with mpmath.workdps(dps):
+        vals = [mp_value(point[a], dps) for a in args]
+        return +fn(*vals)
+
+
+# --- python-flint balls ---------------------------------------------------------------------
