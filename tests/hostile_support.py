@@ -51,11 +51,16 @@ class Run:
 
 def env_for(cache: Path, **extra) -> dict:
     """The environment of a command: this worktree on PYTHONPATH, a private cache, no CI (so the
-    output does not depend on where the tests run), no progress bar (stderr is a pipe)."""
+    output does not depend on where the tests run), no progress bar (stderr is a pipe); ``extra``
+    on top (a value None unsets the variable)."""
     env = {k: v for k, v in os.environ.items() if k not in ("CI", "PYTHONWARNINGS")}
     env["PYTHONPATH"] = str(REPO)
     env["QUASICENTRAL_CACHE"] = str(cache)
-    env.update(extra)
+    for key, value in extra.items():  # None: the variable is not set
+        if value is None:
+            env.pop(key, None)
+        else:
+            env[key] = value
     return env
 
 
@@ -269,9 +274,12 @@ def one_line_error(run: Run, *names: str, pattern: str | None = None) -> str:
 
 
 def names_file_and_line(message: str, path: Path, lines) -> None:
-    """``message`` names ``path`` (its full path, as given) at one of ``lines``."""
+    """``message`` names ``path`` (its full path, as given or with its folder resolved) at one of
+    ``lines``."""
     lines = {lines} if isinstance(lines, int) else set(lines)
-    found = [int(m.group(1)) for m in re.finditer(re.escape(str(path)) + r":(\d+)", message)]
+    spellings = {str(path), str(path.parent.resolve() / path.name)}  # as given, or its folder resolved
+    found = [int(m.group(1)) for spelling in spellings
+             for m in re.finditer(re.escape(spelling) + r":(\d+)", message)]
     assert found, f"{path}:LINE not in {message!r}"
     assert set(found) & lines, f"{message!r} names line(s) {found} of {path.name}, expected one of {sorted(lines)}"
 

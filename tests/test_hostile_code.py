@@ -2,13 +2,17 @@
 code: a payload that reaches Python's builtins through a function's globals, ``__import__``,
 attribute access, a lambda or a comprehension runs nothing (no ``PWNED`` file anywhere) and is
 refused in one line naming the file and line.  And ``catalog`` runs none of the folder's code:
-only verify, errata, mutate and report import its ``.py`` modules.
+only verify, errata, mutate and report import its ``.py`` modules.  Beyond the issue's list, two
+more ways a folder's code could run or a run could write into the folder: a planted
+``__pycache__`` bytecode file taken for motion.py's, and the ``__pycache__`` an import leaves.
 
 Each command runs in a working directory of the test's own, where ``touch PWNED`` would land;
 the whole temporary folder of the test, the text's folder and the repository are searched for
 it afterwards."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import pytest
 
@@ -111,3 +115,41 @@ def test_catalog_imports_no_module_of_the_folder(text, sh, tmp_path):
     no_crash(run)
     assert not marker.exists(), "catalog imported the folder's motion.py"
     assert run.code == 0, (run.code, run.err[-1500:])
+
+
+# --- beyond the issue's list: the folder's own files are input, never output -----------------------
+def _files(root: Path) -> dict[str, bytes]:
+    return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def test_verify_writes_nothing_into_the_texts_folder(text, sh):
+    """Beyond issue 29's list, the contract's "nothing outside `--out` written" for the folder
+    itself (someone else's notes, a read-only checkout): importing its derivation modules leaves
+    no `__pycache__` there, in an environment without PYTHONDONTWRITEBYTECODE as a user has."""
+    before = _files(text.root)
+    run = sh.run("verify", "--text", text.root, PYTHONDONTWRITEBYTECODE=None)
+    no_crash(run)
+    assert run.code == 0, run.err[-1500:]
+    assert _files(text.root) == before, sorted(set(_files(text.root)) - set(before))
+
+
+def test_a_planted_bytecode_file_is_not_run_instead_of_the_source(text, sh, tmp_path):
+    """Beyond issue 29's list: a folder that ships `__pycache__/motion.cpython-XY.pyc` compiled from
+    other code, stamped with motion.py's own modification time and size, so that Python's import
+    takes it for motion.py's: the code run is the source the reader reviewed, never the planted
+    bytecode (here the planted code would create a file)."""
+    import importlib.util
+    from importlib import _bootstrap_external
+
+    marker = tmp_path / "planted-code-ran"
+    source = text.path(text.module)
+    planted = f"open({str(marker)!r}, 'w').close()\n" + source.read_text()
+    st = source.stat()
+    code = compile(planted, str(source), "exec")
+    pyc = Path(importlib.util.cache_from_source(str(source)))
+    pyc.parent.mkdir()
+    pyc.write_bytes(bytes(_bootstrap_external._code_to_timestamp_pyc(code, int(st.st_mtime), st.st_size)))
+    run = sh.run("verify", "--text", text.root)
+    no_crash(run)
+    assert not marker.exists(), "the planted bytecode ran instead of motion.py"
+    assert run.code == 0, run.err[-1500:]
