@@ -79,7 +79,8 @@ def load_text(text: str | Path, reload: bool = False, workspace_: Workspace | No
         if reload:
             ws.forget(found)
             (found,) = ws.resolve([spec])
-        ws.load([found])
+        found.validate()
+        ws.survey([found])
     except CatalogError as exc:
         raise InputError(str(exc)) from None
     return LoadedText(found, ws)

@@ -18,12 +18,13 @@ from hostile_support import skeleton_template, text  # noqa: F401 - fixtures
 @pytest.fixture(autouse=True)
 def private(tmp_path, monkeypatch):
     """A cache of the test's own; every text loaded from the test's folder forgotten afterwards."""
-    from quasicentral.engine import texts
+    import quasicentral as qc
 
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
     yield
-    for t in [t for t in list(texts._OPEN.values()) if str(t.root).startswith(str(tmp_path.resolve()))]:
-        texts.forget(t)
+    ws = qc.workspace()
+    for t in [t for t in ws.texts if str(t.root).startswith(str(tmp_path.resolve()))]:
+        ws.forget(t)
 
 
 def _no_option_names(message: str) -> None:

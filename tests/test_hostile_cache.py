@@ -34,15 +34,19 @@ def forged(skeleton_template, tmp_path_factory):
     cache = base / "cache"
     first = qc("verify", "--text", folder.root, "--json", cache=cache, cwd=base)
     assert first.code == 1, first.err[-2000:]  # the premise: entry 1 is refuted
-    verdicts = {json.loads(p.read_text())["id"]: p for p in cache.glob("*.json")}
+    verdicts = {json.loads(p.read_text())["outcome"]["id"]: p for p in cache.glob("*.json")}
     assert set(verdicts) == {"hforged:1", "hforged:2"}, verdicts
     one = json.loads(verdicts["hforged:1"].read_text())
-    one.update(status="verified", problems=[], verdict={
-        "verdict": "verified", "method": "symbolic", "detail": FORGED_DETAIL, "points": 20, "digits": [30, 60],
-        "dimensions": "consistent"})
+    # a verified verdict whose reason carries the forged words (the records are typed: a reason
+    # is a code and its fields)
+    forged_reason = {"code": "proved", "fields": {"numbers": {"reason": {
+        "code": "setup-failed", "fields": {"error": FORGED_DETAIL}}}}}
+    one["outcome"].update(status="verified", problems=[], verdict={
+        "verdict": "verified", "method": "symbolic", "reason": forged_reason, "points": 20, "digits": [30, 60],
+        "dimensions": [], "witness": None})
     verdicts["hforged:1"].write_text(json.dumps(one, sort_keys=True))
     two = json.loads(verdicts["hforged:2"].read_text())
-    two["verdict"]["witness"]["printed"] = FORGED_WITNESS
+    two["outcome"]["verdict"]["witness"]["printed"] = FORGED_WITNESS
     verdicts["hforged:2"].write_text(json.dumps(two, sort_keys=True))
     (record,) = cache.glob("runs/*.json")
     rec = json.loads(record.read_text())

@@ -102,7 +102,9 @@ def plain(tex: str) -> str:
     s = re.sub(r"_\{?([0-9]+)\}?", lambda m: m.group(1).translate(_SUB), s)
     s = re.sub(r"\\[A-Za-z]+", lambda m: _PLAIN_MATH.get(m.group(0), ""), s)
     s = s.replace("$", "").replace("{", "").replace("}", "").replace("\\", "")
-    return " ".join(s.split())
+    s = "".join(ch for ch in s if ch.isprintable())
+    # what TeX would still read as markup in a PDF string: escaped
+    return " ".join(s.split()).replace("%", r"\%").replace("#", r"\#").replace("&", r"\&")
 
 
 def pdf_safe(title: str) -> str:

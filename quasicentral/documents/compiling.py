@@ -6,7 +6,9 @@ from __future__ import annotations
 
 import os
 import re
+import shutil
 import subprocess
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -42,34 +44,75 @@ def log_problems(log_text: str) -> list[str]:
     return found
 
 
+#: TeX's own file access for a document built from a folder someone sent: it may read and write
+#: only inside its build folder (paranoid), and run no program
+SANDBOX = {"openin_any": "p", "openout_any": "p", "shell_escape": "f"}
+
+
 def compile_one(out: Path, name: str) -> Path:
-    """``latexmk -pdf`` one document in ``out``; raise :class:`LatexError` on any LaTeX error
-    or undefined reference.  Returns the PDF's path."""
+    """``latexmk -pdf`` one document of ``out`` in a build folder of its own (a fresh folder
+    inside ``out``, holding copies of the document, ``versions.tex`` and the figures), TeX kept
+    to that folder (:data:`SANDBOX`: no ``\\input`` of a file elsewhere, no ``\\openout`` of a
+    file of ``out``, no shell); the PDF and the log then written into ``out`` through a
+    temporary file and a rename.  Raises :class:`LatexError` on any LaTeX error or undefined
+    reference.  Returns the PDF's path."""
     stem = name[:-4]
-    for suffix in (".pdf", ".log") + AUX_SUFFIXES:  # LaTeX would write through a link
+    for suffix in (".pdf", ".log"):  # a link there is refused before anything is built
         files.inside(out, stem + suffix)
+    clean_job(out, stem)  # what an earlier build left beside the document
     log = out / f"{stem}.log"
-    env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1"}
+    build = Path(tempfile.mkdtemp(prefix=f"quasicentral-build-{stem}-", dir=out))
+    try:
+        _stage(out, build, name)
+        proc, problems = _latexmk(build, name, log)
+        built_log = build / f"{stem}.log"
+        if built_log.is_file():
+            files.write_bytes(log, built_log.read_bytes())
+        if proc.returncode != 0 or problems:
+            first = problems[0] if problems else f"latexmk exited with {proc.returncode}"
+            raise LatexError(f"LaTeX failed on {name} ({first[:160]}): see {log}", log)
+        pdf = build / f"{stem}.pdf"
+        try:
+            files.write_bytes(out / f"{stem}.pdf", pdf.read_bytes())
+        except OSError as exc:
+            raise LatexError(f"cannot write {out / (stem + '.pdf')}: {exc.strerror or exc}", log) from None
+    finally:
+        shutil.rmtree(build, ignore_errors=True)
+    return out / f"{stem}.pdf"
+
+
+def _stage(out: Path, build: Path, name: str) -> None:
+    """Copy what a document includes into its build folder (regular files only)."""
+    import stat
+
+    def copy(src: Path, dst: Path) -> None:
+        st = os.lstat(src)
+        if stat.S_ISREG(st.st_mode):
+            shutil.copyfile(src, dst)
+
+    copy(out / name, build / name)
+    if (out / VERSIONS_FILE).is_file():
+        copy(out / VERSIONS_FILE, build / VERSIONS_FILE)
+    figures = out / "figures"
+    if figures.is_dir() and not figures.is_symlink():
+        (build / "figures").mkdir()
+        for f in sorted(figures.iterdir()):
+            copy(f, build / "figures" / f.name)
+
+
+def _latexmk(build: Path, name: str, log: Path):
+    env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1", **SANDBOX}
     cmd = ["latexmk", "-norc", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",
            "-silent", name]
-    for _attempt in (1, 2):
-        try:
-            proc = subprocess.run(cmd, cwd=out, capture_output=True, text=True, env=env, timeout=600)
-        except FileNotFoundError:
-            raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
-        except subprocess.TimeoutExpired:
-            clean_job(out, stem)
-            raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
-        problems = log_problems(log.read_text(encoding="utf-8", errors="replace")) if log.is_file() else []
-        if proc.returncode == 0 and not problems:
-            break
-        # a stale or broken .aux (or latexmk's database) from an earlier run makes every later
-        # run fail: remove this job's auxiliary files (the log is kept) and try once from scratch
-        clean_job(out, stem)
-    if proc.returncode != 0 or problems:
-        first = problems[0] if problems else f"latexmk exited with {proc.returncode}"
-        raise LatexError(f"LaTeX failed on {name} ({first[:160]}): see {log}", log)
-    return out / f"{stem}.pdf"
+    try:
+        proc = subprocess.run(cmd, cwd=build, capture_output=True, text=True, env=env, timeout=600)
+    except FileNotFoundError:
+        raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
+    except subprocess.TimeoutExpired:
+        raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
+    built_log = build / f"{name[:-4]}.log"
+    problems = log_problems(built_log.read_text(encoding="utf-8", errors="replace")) if built_log.is_file() else []
+    return proc, problems
 
 
 #: What a LaTeX run leaves beside the document that a later run reads back (the log is kept).

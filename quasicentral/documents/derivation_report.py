@@ -12,8 +12,8 @@ from quasicentral.documents.blocks import (VERSIONS_FILE, aligned, certified_mar
 from quasicentral.documents.latex import clean_prose, escape, with_math
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
 from quasicentral.documents.steps import (CauseGroup, FigureItem, Step, TextRecords, caption, cause_groups, cause_note,
-                                          cause_title, entry_heading, figures_for, kind_name, section_title,
-                                          sections_of, step_text)
+                                          cause_title, entry_heading, erratum_note, figures_for, kind_name,
+                                          section_title, sections_of, step_text)
 from quasicentral.engine.registry import Mode
 from quasicentral.engine.verdict import Method, Status
 
@@ -178,6 +178,10 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
             verdict += " " + W["cause_of"] + ": " + "; ".join(
                 W["see_cause"].format(label=g.label) for g in mine) + "."
     out.append(verdict + "\n\n")
+    if st.is_erratum and any(g.recorded for g in groups if st in g.steps):
+        note = erratum_note(st, prose, lang)  # this display's own words (the cause's are in its section)
+        if note:
+            out.append(note + "\n\n")
     # the step
     if st.derivation is not None:
         uses = [ref_of(by_id, u, handout=False) for u in st.uses if u in by_id]

@@ -662,16 +662,41 @@ def escape(s: str) -> str:
     return "".join(TEXT_CHARS.get(ch, ch) if ch.isascii() else text(ch) for ch in s)
 
 
+#: the control words a text's inline mathematics may use: its symbols, operators and layout —
+#: nothing that reads, writes or redefines (a folder's words are printed, never obeyed)
+SAFE_MATH = frozenset("""
+alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa lambda mu nu xi omicron pi varpi
+rho varrho sigma varsigma tau upsilon phi varphi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon
+Phi Psi Omega frac tfrac dfrac sqrt cdot times div pm mp le leq ge geq ne neq approx sim simeq equiv propto to
+rightarrow leftarrow Rightarrow Leftarrow mapsto infty partial nabla int iint oint sum prod lim limsup liminf
+sin cos tan cot sec csc arcsin arccos arctan arccotg cotg tg sinh cosh tanh coth ln log exp min max det
+left right big Big bigg Bigg bigl bigr Bigl Bigr dot ddot dddot hat bar vec tilde widetilde widehat overline
+underline mathrm mathbf mathit mathcal mathsf mathbb text textrm operatorname quad qquad ldots cdots dots vdots
+ddots prime circ ell hbar emptyset varnothing lfloor rfloor lceil rceil langle rangle mid vert Vert forall
+exists in notin subset subseteq supset cup cap wedge vee neg land lor displaystyle textstyle limits nolimits
+substack over choose binom pmod bmod perp parallel angle degree star ast bullet oplus otimes ll gg
+""".split())
+
+
+def safe_math(tex: str) -> bool:
+    """Whether ``tex`` (a text's inline mathematics) uses only :data:`SAFE_MATH` control words."""
+    return all(word in SAFE_MATH for word in re.findall(r"\\([A-Za-z@]+)", tex))
+
+
 def with_math(s: str, letters: bool = True) -> str:
     r"""Prose that may hold inline mathematics between ``$`` signs (catalog notes and titles):
     the mathematics is kept as written, the rest goes through :func:`text`.  An odd number of
-    ``$`` means they are not delimiters: everything is prose then.
+    ``$`` means they are not delimiters, and mathematics with a control word outside
+    :data:`SAFE_MATH` (``\input``, ``\write``, ``\def`` …) is no mathematics of a text's:
+    everything is prose then, escaped.
 
     >>> print(with_math(r"silou $R = 2\kappa mv$ a κ"))
     silou $R = 2\kappa mv$ a \ensuremath{\kappa}
+    >>> print(with_math(r"$\input{/etc/passwd}$"))
+    \$\textbackslash{}input\{/etc/passwd\}\$
     """
     parts = s.split("$")
-    if len(parts) % 2 == 0 or any(not p.strip() for p in parts[1::2]):
+    if len(parts) % 2 == 0 or any(not p.strip() for p in parts[1::2]) or not all(safe_math(p) for p in parts[1::2]):
         return text(s, letters)
     return "".join(text(p, letters) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
 

@@ -373,8 +373,11 @@ def _lang_table(raw, where: str) -> dict[str, str]:
 
 
 def generic_prose(text_id: str, title: str | None = None) -> TextProse:
-    """The prose of a text that brings no report.toml: its title (or its id) and generic words."""
-    name = title or text_id
+    """The prose of a text that brings no report.toml: its title (or its id) — plain text from
+    text.toml, escaped — and generic words."""
+    from quasicentral.documents.latex import text
+
+    name = text(title or text_id)
     return TextProse(text_id, {lang: name for lang in LANGS}, dict(GENERIC["intro"]),
                      dict(GENERIC["figures_intro"]), {})
 

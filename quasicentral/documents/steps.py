@@ -124,6 +124,7 @@ def records_for(ws, texts: list, opts, progress=None, on_warning=None) -> list[T
     entries = [e for t in texts for e in t.entries.values()]
     outcomes = dict(zip([e.id for e in entries], run.run(ws, entries, opts, use_cache=True, progress=progress,
                                                           on_warning=on_warning)))
+    run.derive_all(ws, [e.id for e in entries], opts)  # the folders' code runs in workers, not here
     return [TextRecords(t, tuple(steps_of(ws, t, outcomes))) for t in texts]
 
 

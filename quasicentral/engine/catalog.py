@@ -102,20 +102,59 @@ def parse_transcription(text: str, table: SymbolTable, where: str) -> sp.Basic:
     return out
 
 
-def line_of(path: Path, needle: str) -> int | None:
-    """The first line of ``path`` holding ``needle`` (for messages naming file and line)."""
+def _lines(path: Path) -> list[str]:
     try:
-        for i, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
-            if needle in line:
+        return read_bytes(Path(path)).decode("utf-8", "replace").splitlines()
+    except CatalogError:
+        return []
+
+
+def line_of(path: Path, needle: str) -> int | None:
+    """The line of ``path`` where the top-level key ``needle`` is set (``needle = …``), else the
+    first line holding ``needle`` (for messages naming file and line)."""
+    import re
+
+    lines = _lines(path)
+    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_-]*", needle):
+        for i, line in enumerate(lines, 1):
+            if re.match(rf"\s*{re.escape(needle)}\s*=", line):
                 return i
-    except OSError:
-        return None
+    for i, line in enumerate(lines, 1):
+        if needle in line:
+            return i
     return None
 
 
 def where(path: Path, needle: str | None = None) -> str:
     line = line_of(path, needle) if needle else None
     return f"{path}:{line}" if line else str(path)
+
+
+def locate(path: Path, table: str, index: int = 0, key: str | None = None) -> str:
+    """``path:line`` of the ``index``-th ``[[table]]`` (or ``[table]``) of a TOML file, or of its
+    ``key`` where that table sets it."""
+    import re
+
+    header = re.compile(rf"\s*\[\[?\s*{re.escape(table)}\s*\]\]?\s*(#.*)?$")
+    any_header = re.compile(r"\s*\[")
+    lines = _lines(path)
+    seen, start = -1, None
+    for i, line in enumerate(lines, 1):
+        if header.match(line):
+            seen += 1
+            if seen == index:
+                start = i
+                break
+    if start is None:
+        return where(path, key or table)
+    if key is not None:
+        for i in range(start, len(lines)):
+            line = lines[i]
+            if any_header.match(line):
+                break
+            if re.match(rf"\s*{re.escape(key)}\s*=", line):
+                return f"{path}:{i + 1}"
+    return f"{path}:{start}"
 
 
 MAX_FILE_BYTES = 4 * 2**20  # a text's TOML file is typed by hand: more is not a text
@@ -157,7 +196,33 @@ def read_toml(path: Path) -> dict:
     except UnicodeDecodeError as exc:
         raise CatalogError(f"{path}: not UTF-8 text (byte {exc.start})") from None
     except RecursionError:
-        raise CatalogError(f"{path}: arrays or tables nested too deeply to be a text's data") from None
+        raise CatalogError(f"{path}:{_deep_line(data.decode('utf-8', 'replace'))}: arrays or tables nested too "
+                           "deeply to be a text's data") from None
+
+
+def _deep_line(text: str, depth_limit: int = 64) -> int:
+    """The line where brackets first nest deeper than ``depth_limit`` (quoted text skipped)."""
+    depth, line, quote, comment = 0, 1, None, False
+    for ch in text:
+        if ch == "\n":
+            line += 1
+            comment = False
+            continue
+        if comment:
+            continue
+        if quote:
+            quote = None if ch == quote else quote
+        elif ch == "#":
+            comment = True
+        elif ch in "\"'":
+            quote = ch
+        elif ch in "[{":
+            depth += 1
+            if depth > depth_limit:
+                return line
+        elif ch in "]}":
+            depth -= 1
+    return 1
 
 
 _REQUIRED = ("id", "name", "latex", "printed")
@@ -193,7 +258,7 @@ def _strings(raw: dict, key: str, here: str) -> tuple[str, ...]:
 
 
 def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, section: str, order: int) -> Entry:
-    here = where(path, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(path)
+    here = locate(path, "equation", i)
     missing = [k for k in _REQUIRED if k not in raw]
     if missing:
         raise CatalogError(f"{here}: equation #{i + 1} lacks {', '.join(missing)}")
@@ -207,7 +272,7 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
         raise CatalogError(f"{here}: id {eid!r} does not start with {text_id}: (or holds control characters)")
     for key in ("note", "url", "kind", "semantic", "approx"):
         if key in raw and not isinstance(raw[key], str):
-            raise CatalogError(f"{here}: {eid}: {key} is a string")
+            raise CatalogError(f"{locate(path, 'equation', i, key)}: {eid}: {key} is a string")
     if "number" in raw and (not isinstance(raw["number"], (str, int)) or isinstance(raw["number"], bool)):
         raise CatalogError(f"{here}: {eid}: number is a string such as \"12\"")
     if raw.get("kind", "identity") not in KINDS:
@@ -226,8 +291,7 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
             if name not in table:
                 raise SymbolError(f"real: {name} is not a declared symbol")
     except (SymbolError, UnitError) as exc:
-        first = raw["printed"].strip().splitlines()[0] if raw["printed"].strip() else None
-        raise CatalogError(f"{where(path, first) if first else here}: {eid}: {exc}") from None
+        raise CatalogError(f"{transcription_line(path, i, exc)}: {eid}: {exc}") from None
     return Entry(
         id=eid, source=text_id, section=section, name=raw["name"],
         latex=raw["latex"].strip(), printed_text=raw["printed"].strip(),
@@ -236,6 +300,25 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
         note=raw.get("note", "").strip(), file=path.name, order=order, symbols=table,
         constraints_text=constraints, real_names=real, url=raw.get("url", "").strip(), kind=raw.get("kind", ""),
         semantic=raw.get("semantic", "").strip(), approx=raw.get("approx", "").strip(), path=str(path))
+
+
+def transcription_line(path: Path, i: int, exc: Exception, table: str = "equation", key: str = "printed") -> str:
+    """``path:line`` of the line of the ``i``-th table's transcription that ``exc`` names (the
+    reader counts lines from the transcription's first)."""
+    import re
+
+    at = locate(path, table, i, key)
+    m = re.match(r"line (\d+), column", str(exc).split(": ", 1)[-1]) or re.search(r"line (\d+), column", str(exc))
+    if not m or ":" not in at:
+        return at
+    base, line = at.rsplit(":", 1)
+    if not line.isdigit():
+        return at
+    lines = _lines(path)
+    opener = lines[int(line) - 1] if int(line) - 1 < len(lines) else ""
+    # a multi-line string opened on the key's line: the transcription starts on the next one
+    starts_below = opener.split("=", 1)[-1].strip() in ("'" * 3, '"' * 3)
+    return f"{base}:{int(line) + int(m.group(1)) - 1 + (1 if starts_below else 0)}"
 
 
 def _printable(s: str) -> bool:

@@ -28,7 +28,8 @@ from types import MappingProxyType
 
 import sympy as sp
 
-from quasicentral.engine.catalog import CatalogError, Entry, parse_transcription, read_toml, where
+from quasicentral.engine.catalog import (CatalogError, Entry, locate, parse_transcription, read_toml,
+                                         transcription_line, where)
 from quasicentral.notation.symbols import SymbolError, SymbolTable
 
 
@@ -185,15 +186,25 @@ def load(paths: list[Path], catalog: dict[str, Entry], table: SymbolTable, text_
 def _tables(data: dict, key: str, p: Path) -> list[dict]:
     value = data.get(key, [])
     if not isinstance(value, list) or not all(isinstance(v, dict) for v in value):
-        raise CatalogError(f"{where(p, key)}: write each {key} as a [[{key}]] table (double brackets)")
+        raise CatalogError(f"{locate(p, key)}: write each {key} as a [[{key}]] table (double brackets)")
     return value
 
 
-def _check_strings(raw: dict, keys, here: str, what: str) -> None:
+#: the keys each table of an errata file may set (and their wording in another language: KEY_<lang>)
+_ALLOWED = {"cause": {"id", "title", "kind", "note"},
+            "erratum": {"id", "kind", "cause", "corrected", "corrected_latex", "note"},
+            "cleared": {"id", "suspicion", "note", "branch"}}
+
+
+def _check_keys(raw: dict, table: str, p: Path, i: int, what: str) -> None:
+    """Unknown keys are refused, and the wording keys are strings (naming the key's line)."""
     for key, value in raw.items():
         base = key.rsplit("_", 1)[0] if re.fullmatch(r".+_[a-z]{2}", key) else key
-        if (key in keys or base in keys) and not isinstance(value, str):
-            raise CatalogError(f"{here}: {what}: {key} is a string")
+        if key not in _ALLOWED[table] and not (base in ("title", "note", "suspicion") and base in _ALLOWED[table]):
+            raise CatalogError(f"{locate(p, table, i, key)}: {what}: unknown key {key!r} "
+                               f"(a [[{table}]] holds {', '.join(sorted(_ALLOWED[table]))})")
+        if key != "cause" and not isinstance(value, str):
+            raise CatalogError(f"{locate(p, table, i, key)}: {what}: {key} is a string")
 
 
 _CAUSE_KEYS = ("id", "title", "kind", "note")
@@ -212,32 +223,32 @@ def _load_file(p: Path, errata: dict, cleared: dict, causes: dict, catalog: dict
     data = read_toml(p)
     unknown = set(data) - {"cause", "erratum", "cleared"}
     if unknown:
-        raise CatalogError(f"{where(p, sorted(unknown)[0])}: unknown key(s) {', '.join(sorted(unknown))} "
+        raise CatalogError(f"{locate(p, sorted(unknown)[0])}: unknown key(s) {', '.join(sorted(unknown))} "
                            "(an errata file holds [[cause]], [[erratum]] and [[cleared]] tables)")
-    for raw in _tables(data, "cause", p):
-        here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
+    for i, raw in enumerate(_tables(data, "cause", p)):
+        here = locate(p, "cause", i)
         missing = [k for k in _CAUSE_KEYS if k not in raw]
         if missing:
             raise CatalogError(f"{here}: cause {raw.get('id', '?')} lacks {', '.join(missing)}")
-        _check_strings(raw, ("id", "title", "kind", "note"), here, f"cause {raw.get('id')}")
+        _check_keys(raw, "cause", p, i, f"cause {raw.get('id')}")
         kind = _kind(raw, here, f"cause {raw['id']}")
         if raw["id"] in causes:
             raise CatalogError(f"{here}: duplicate cause {raw['id']!r}")
         causes[raw["id"]] = Cause(raw["id"], text_id, kind, len(causes),
                                   MappingProxyType({k: v.strip() for k, v in _language_keys(raw, "title").items()}),
                                   MappingProxyType({k: v.strip() for k, v in _language_keys(raw, "note").items()}))
-    for raw in _tables(data, "erratum", p):
-        _erratum(raw, p, errata, cleared, catalog, table)
-    for raw in _tables(data, "cleared", p):
-        _cleared(raw, p, cleared, catalog, table)
+    for i, raw in enumerate(_tables(data, "erratum", p)):
+        _erratum(raw, p, i, errata, cleared, catalog, table)
+    for i, raw in enumerate(_tables(data, "cleared", p)):
+        _cleared(raw, p, i, cleared, catalog, table)
 
 
-def _erratum(raw: dict, p: Path, errata: dict, cleared: dict, catalog: dict, table: SymbolTable) -> None:
-    here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
+def _erratum(raw: dict, p: Path, i: int, errata: dict, cleared: dict, catalog: dict, table: SymbolTable) -> None:
+    here = locate(p, "erratum", i)
     missing = [k for k in _ERRATUM_KEYS if k not in raw]
     if missing:
         raise CatalogError(f"{here}: erratum {raw.get('id', '?')} lacks {', '.join(missing)}")
-    _check_strings(raw, ("id", "kind", "corrected", "corrected_latex", "note"), here, f"erratum {raw.get('id')}")
+    _check_keys(raw, "erratum", p, i, f"erratum {raw.get('id')}")
     if raw["id"] not in catalog:
         raise CatalogError(f"{here}: erratum for unknown id {raw['id']!r}")
     kind = _kind(raw, here, raw["id"])
@@ -249,26 +260,26 @@ def _erratum(raw: dict, p: Path, errata: dict, cleared: dict, catalog: dict, tab
     try:
         table.check_names(raw["corrected"])
     except SymbolError as exc:
-        raise CatalogError(f"{here}: {raw['id']}: corrected: {exc}") from None
+        raise CatalogError(f"{transcription_line(p, i, exc, 'erratum', 'corrected')}: {raw['id']}: corrected: {exc}") from None
     notes = {k: v.strip() for k, v in _language_keys(raw, "note").items()}
-    for note in notes.values():
-        check_placeholders(note, f"{here}: {raw['id']}", table)
+    for key, note in notes.items():
+        check_placeholders(note, f"{locate(p, 'erratum', i, 'note' + ('_' + key if key else ''))}: {raw['id']}", table)
     errata[raw["id"]] = Erratum(raw["id"], kind, raw["corrected"].strip(), raw["corrected_latex"].strip(),
                                 MappingProxyType(notes), tuple(cause), p.name, table, str(p))
 
 
-def _cleared(raw: dict, p: Path, cleared: dict, catalog: dict, table: SymbolTable) -> None:
-    here = where(p, f'"{raw["id"]}"') if isinstance(raw.get("id"), str) else str(p)
+def _cleared(raw: dict, p: Path, i: int, cleared: dict, catalog: dict, table: SymbolTable) -> None:
+    here = locate(p, "cleared", i)
     if raw.get("id") not in catalog:
         raise CatalogError(f"{here}: cleared suspect for unknown id {raw.get('id')!r}")
     if raw["id"] in cleared:
         raise CatalogError(f"{here}: {raw['id']!r} cleared twice")
     if "suspicion" not in raw or "note" not in raw:
         raise CatalogError(f"{here}: cleared {raw['id']} needs 'suspicion' and 'note'")
-    _check_strings(raw, ("id", "suspicion", "note", "branch"), here, f"cleared {raw['id']}")
+    _check_keys(raw, "cleared", p, i, f"cleared {raw['id']}")
     notes = {k: v.strip() for k, v in _language_keys(raw, "note").items()}
-    for note in notes.values():
-        check_placeholders(note, f"{here}: {raw['id']}", table)
+    for key, note in notes.items():
+        check_placeholders(note, f"{locate(p, 'cleared', i, 'note' + ('_' + key if key else ''))}: {raw['id']}", table)
     suspicions = {k: v.strip() for k, v in _language_keys(raw, "suspicion").items()}
     cleared[raw["id"]] = Cleared(raw["id"], raw["suspicion"].strip(), MappingProxyType(notes),
                                  raw.get("branch", "").strip(), MappingProxyType(suspicions))

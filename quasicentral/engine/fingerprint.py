@@ -52,25 +52,56 @@ def code_fingerprint() -> str:
     return h.hexdigest()
 
 
+#: the most bytes of one file a fingerprint reads (a text's files are typed by hand; a larger one
+#: is refused when the text is read, and hashed here by its size and time alone)
+MAX_HASHED_BYTES = 4 * 2**20
+
+
+def text_files(root: Path) -> list[Path]:
+    """The files a verdict of the text in ``root`` can depend on: ``text.toml``, the catalog and
+    errata files, and its derivation modules (every other file of the folder — the report's
+    prose, the figures, a data file linked in — is not read by the checker)."""
+    out = [root / TEXT_FILE] if (root / TEXT_FILE).exists() else []
+    for sub in ("catalog", "errata"):
+        out += sorted((root / sub).glob("*.toml"))
+    out += sorted(p for p in root.glob("*.py") if p.name not in DOCUMENT_FILES and not p.name.startswith("_"))
+    return out
+
+
 def folder_fingerprint(tid: str, root: Path) -> str:
-    """Hash of every file of a text's folder a verdict can depend on (all but the report's
-    prose and the figures, :data:`DOCUMENT_FILES`): a change there invalidates its verdicts."""
+    """Hash of every file of a text's folder a verdict can depend on (:func:`text_files`): a
+    change there invalidates its verdicts.  Only regular files are read, each up to
+    :data:`MAX_HASHED_BYTES` (a pipe or a device is named by its kind, a larger file by its size
+    and time: the reader of the text refuses both)."""
+    import stat as stat_mod
+
     h = hashlib.sha256(tid.encode())
-    for path in sorted(root.rglob("*")):
-        rel = path.relative_to(root)
-        if rel.as_posix() in DOCUMENT_FILES:
+    for path in text_files(root):
+        h.update(path.relative_to(root).as_posix().encode())
+        try:
+            st = path.stat()
+        except OSError as exc:
+            h.update(f"unreadable {exc.errno}".encode())
             continue
-        if path.is_file() and "__pycache__" not in rel.parts and not any(p.startswith(".") for p in rel.parts):
-            h.update(rel.as_posix().encode())
-            h.update(path.read_bytes())
+        if not stat_mod.S_ISREG(st.st_mode) or st.st_size > MAX_HASHED_BYTES:
+            h.update(f"special {st.st_mode} {st.st_size} {st.st_mtime_ns}".encode())
+            continue
+        try:
+            with open(path, "rb") as f:
+                h.update(f.read(MAX_HASHED_BYTES + 1))
+        except OSError as exc:
+            h.update(f"unreadable {exc.errno}".encode())
     return h.hexdigest()
 
 
 def _text_id(root: Path) -> str | None:
+    path = root / TEXT_FILE
     try:
-        with open(root / TEXT_FILE, "rb") as f:
+        if not path.is_file() or path.stat().st_size > 4 * 2**20:  # not a text's file: the full reader says why
+            return None
+        with open(path, "rb") as f:
             tid = tomllib.load(f).get("id")
-    except (OSError, tomllib.TOMLDecodeError):
+    except (OSError, ValueError, RecursionError, tomllib.TOMLDecodeError):
         return None
     return tid if isinstance(tid, str) else None
 

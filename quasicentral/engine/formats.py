@@ -132,11 +132,30 @@ def _table(headers: list[str], rows: list[list[str]]) -> str:
     return "\n".join([line(headers), line(["-" * w for w in widths])] + [line(r) for r in rows])
 
 
+DETAIL_WIDTH = 70  # characters of the table's detail column
+
+
+def _shortened(text: str, width: int = DETAIL_WIDTH) -> str:
+    """``text`` cut at a word boundary to ``width`` characters, an ellipsis saying so."""
+    if len(text) <= width:
+        return text
+    cut = text[:width - 1].rsplit(" ", 1)[0].rstrip(" ,;:(")
+    return cut + "…"
+
+
+def _table_detail(r: dict) -> str:
+    """What the table says of an entry: its verdict's reason, or — where the records expected
+    something else (an erratum whose correction fails) — the first problem."""
+    if r["status"] == "unexpected" and r.get("problems"):
+        return r["problems"][0]
+    return r["detail"] or ""
+
+
 def verify_table(doc: dict) -> str:
-    rows = [[r["id"], r["status"], r["verdict"], r["method"], (r["detail"] or "")[:70]] for r in doc["equations"]]
+    rows = [[r["id"], r["status"], r["verdict"], r["method"], _shortened(_table_detail(r))] for r in doc["equations"]]
     s = doc["summary"]
     tail = (f"\n{s['entries']} entries: " + ", ".join(f"{v} {k}" for k, v in s["status"].items())
-            + (f" ({s['causes']} root causes)" if s.get("causes") else "")
+            + (f" ({s['causes']} root cause{'s' if s['causes'] != 1 else ''})" if s.get("causes") else "")
             + ("" if s["ok"] else f"\nunexpected: {', '.join(s['unexpected'])}"))
     return _table(["id", "status", "verdict", "method", "detail"], rows) + tail
 
@@ -159,7 +178,7 @@ def errata_table(doc: dict) -> str:
 
 def catalog_table(doc: dict) -> str:
     rows = [[r["id"], r["number"] or "", r["name"][:45], "ok" if r["dimensions"] == "consistent" else "INCONSISTENT",
-             ",".join(k for k, ok in (r["latex_parser"] or {}).items() if ok) or "-"] for r in doc["equations"]]
+             ",".join(k for k, ok in (r["latex_parser"] or {}).items() if ok is True) or "-"] for r in doc["equations"]]
     s = doc["latex_parser"]
     return (_table(["id", "no.", "name", "dimensions", "parsed by"], rows)
             + f"\n\nLaTeX parser: {s['any']} of {s['entries']} entries read and agreeing "

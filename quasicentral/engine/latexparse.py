@@ -127,12 +127,12 @@ def parse_agrees(entry: Entry, backend: str) -> bool:
     return True
 
 
-def parse_within(entry: Entry, seconds: float) -> tuple[dict[str, bool], bool]:
+def parse_within(entry: Entry, seconds: float) -> tuple[dict[str, bool], str]:
     """Which backends read ``entry`` correctly, each within ``seconds`` of wall-clock and of CPU
-    time; and whether the time ran out (then the answer is not kept)."""
+    time; and why a backend could not finish ('' when each did: then the answer is kept)."""
     from quasicentral.notation.timelimit import CPU, WALL, TimeLimitExceeded, time_limit
 
-    out, ran_out = {}, False
+    out, why = {}, ""
     for b in BACKENDS:
         try:
             with time_limit(seconds, WALL) as wall, time_limit(seconds, CPU) as cpu:
@@ -140,10 +140,10 @@ def parse_within(entry: Entry, seconds: float) -> tuple[dict[str, bool], bool]:
         except TimeLimitExceeded as exc:
             if not ((wall and wall.owns(exc)) or (cpu and cpu.owns(exc))):
                 raise
-            out[b], ran_out = False, True
+            out[b], why = False, f"ran out of time ({seconds:g} s each; --timeout allows more)"
         except RecursionError:
-            out[b] = False
-    return out, ran_out
+            out[b], why = False, why or "nested too deeply for the parser (recursion limit)"
+    return out, why
 
 
 def coverage(entries: list[Entry], progress=None, use_cache: bool = True, seconds: float = 120.0) -> dict:
@@ -169,15 +169,17 @@ def coverage(entries: list[Entry], progress=None, use_cache: bool = True, second
     for e in entries:
         if e.id in per:
             continue
-        per[e.id], ran_out = parse_within(e, seconds)
-        if ran_out:
+        answers, why = parse_within(e, seconds)
+        if why:
             out_of_time.append(e.id)
+            per[e.id] = {**answers, "why": why}
         else:
-            _write(keys[e.id], per[e.id])
+            per[e.id] = answers
+            _write(keys[e.id], answers)
         notify(progress, len(per), len(entries), e.id, cached, "entries parsed")
     per = {e.id: per[e.id] for e in entries}
     summary = {"entries": len(entries), **{b: sum(v[b] for v in per.values()) for b in BACKENDS},
-               "any": sum(any(v.values()) for v in per.values())}
+               "any": sum(any(v[b] for b in BACKENDS) for v in per.values())}
     if out_of_time:
         summary["out_of_time"] = out_of_time
     return {"entries": per, "summary": summary, "cached": cached}

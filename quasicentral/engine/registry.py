@@ -164,10 +164,11 @@ class Derivations:
     disk for the next process; ``read_kept=False`` computes every result anew (a cold run) and
     still keeps it."""
 
-    def __init__(self, store=None, read_kept: bool = True):
+    def __init__(self, store=None, read_kept: bool = True, loader=None):
         self.by_id: dict[str, Derivation] = {}
         self.store = store
         self.read_kept = read_kept
+        self.loader = loader  # loader(text id): make that text's derivations known (a text built on)
         self._results: dict[str, object] = {}
         self._failed: dict[str, BaseException] = {}
         self._used: dict[str, set[str]] = {}
@@ -218,6 +219,9 @@ class Derivations:
             raise self._failed[eid]
         if eid not in self._results:
             der = self.by_id.get(eid)
+            if der is None and self.loader is not None:
+                self.loader(eid.split(":", 1)[0])
+                der = self.by_id.get(eid)
             if der is None:
                 raise RegistryError(f"no derivation registered for {eid!r}")
             with self.current():
@@ -242,7 +246,9 @@ class Derivations:
         self._stack.append(eid)
         try:
             value = der.func()
-        except Exception as exc:
+        except KeyboardInterrupt:
+            raise
+        except BaseException as exc:  # its failure (an exception, sys.exit, its time running out) stands
             self._failed[eid] = exc
             raise
         finally:
@@ -267,6 +273,31 @@ class Derivations:
         if self._stack and used:
             self._used.setdefault(self._stack[-1], set()).update(used)
         return copy.copy(value) if isinstance(value, (dict, list)) else value
+
+    def known(self, eid: str) -> bool:
+        """Whether the result of ``eid`` (or its failure) is at hand, without computing it."""
+        return eid in self._results or eid in self._failed
+
+    def inject(self, eid: str, value, used, built_on) -> None:
+        """A result computed elsewhere (a worker process), with what it used and was built on."""
+        self._results[eid] = value
+        self._used[eid] = set(used)
+        self._texts[eid] = set(built_on)
+
+    def note_failure(self, eid: str, error: str) -> None:
+        """A derivation that failed elsewhere: asking for its result raises that failure."""
+        self._failed[eid] = RuntimeError(error)
+
+    def note_built_on(self, eid: str, texts) -> None:
+        """The texts a result was built on, as its verdict's record says (where the result itself
+        was not computed in this process)."""
+        if eid not in self._texts:
+            self._texts[eid] = set(texts)
+
+    def known_built_on(self, eid: str) -> frozenset[str] | None:
+        """The texts the result of ``eid`` was built on, if known here (nothing is computed)."""
+        got = self._texts.get(eid)
+        return frozenset(got) if got is not None else None
 
     def used(self, eid: str) -> frozenset[str]:
         """The ids whose results the derivation of ``eid`` asked for (after it has run)."""

@@ -15,6 +15,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import pickle
 import sys
 from contextlib import contextmanager
 from pathlib import Path
@@ -44,6 +45,8 @@ def records_of(ws, eid: str) -> EntryRecords:
 def _error(exc: BaseException) -> str:
     if isinstance(exc, SystemExit):
         return f"the derivation calls sys.exit({exc.code!r})"
+    if isinstance(exc, TimeLimitExceeded):
+        return f"ran out of its time budget ({exc})"
     return f"{type(exc).__name__}: {exc}"[:300]
 
 
@@ -59,21 +62,21 @@ def derivation_of(ws, entry: catalog.Entry):
 def verify_entry(ws, entry: catalog.Entry, opts: Options) -> Outcome:
     """The outcome of one entry, within its budget; any failure is this entry's."""
     records = records_of(ws, entry.id)
+    wall = cpu = None
     try:
         with time_limit(opts.timeout, WALL) as wall, time_limit(opts.timeout, CPU) as cpu:
             return _verify_entry(ws, entry, opts, records)
-    except Exception as exc:  # noqa: BLE001 - anything that fails is this entry's, never the run's
-        v = Inconclusive(Method.NONE, Reason.of(Code.STAGE_FAILED, stage="check", error=_error(exc)))
-        return Outcome(entry.id, v, Status.UNEXPECTED, records.erratum is not None,
-                       problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name, reason=v.reason),), records=records)
     except TimeLimitExceeded as exc:
-        mine = (wall is not None and wall.owns(exc)) or (cpu is not None and cpu.owns(exc))
-        if not mine:
+        if not ((wall is not None and wall.owns(exc)) or (cpu is not None and cpu.owns(exc))):
             raise
-        v = Inconclusive(Method.NONE, Reason.of(Code.OUT_OF_TIME, stage="check", seconds=opts.timeout,
-                                                clock=exc.limit.clock.value))
-        return Outcome(entry.id, v, Status.UNEXPECTED, records.erratum is not None,
-                       problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name, reason=v.reason),), records=records)
+        reason = Reason.of(Code.OUT_OF_TIME, stage="check", seconds=opts.timeout, clock=exc.limit.clock.value)
+    except KeyboardInterrupt:
+        raise
+    except BaseException as exc:  # noqa: BLE001 - anything that fails is this entry's, never the run's
+        reason = Reason.of(Code.STAGE_FAILED, stage="check", error=_error(exc))
+    v = Inconclusive(Method.NONE, reason)
+    return Outcome(entry.id, v, Status.UNEXPECTED, records.erratum is not None,
+                   problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name, reason=v.reason),), records=records)
 
 
 def _verify_entry(ws, entry: catalog.Entry, opts: Options, records: EntryRecords) -> Outcome:
@@ -84,7 +87,9 @@ def _verify_entry(ws, entry: catalog.Entry, opts: Options, records: EntryRecords
     result, failed = None, None
     try:
         result = ws.result(entry.id) if derivation.func is not None else {}
-    except (Exception, SystemExit, GeneratorExit) as exc:  # noqa: BLE001 - a failing derivation is this entry's
+    except (KeyboardInterrupt, TimeLimitExceeded):
+        raise
+    except BaseException as exc:  # noqa: BLE001 - a failing derivation (even its sys.exit) is this entry's
         failed = _error(exc)
     v = check(entry.relations(), entry.dims, derivation, entry.id, opts, entry.symbols, result, failed)
     noted = _uses_checked(ws, derivation, failed)
@@ -113,7 +118,8 @@ def _verify_entry(ws, entry: catalog.Entry, opts: Options, records: EntryRecords
 def _uses_checked(ws, derivation, failed) -> tuple[Reason, ...]:
     """A note where a derivation's declared ``uses=`` differs from what it used (the documents
     cite what it used; the status does not change)."""
-    if failed is not None or not derivation.declared_uses or derivation.func is None:
+    if failed is not None or not derivation.declared_uses or derivation.func is None \
+            or not ws.derivations.known(derivation.id):
         return ()
     used = ws.used(derivation.id)
     if set(derivation.declared_uses) == used:
@@ -219,7 +225,7 @@ def run(ws, entries: list[catalog.Entry], opts: Options, use_cache: bool = True,
     selected = list(dict.fromkeys(ws.text(e.source) for e in entries))
     for t in selected:
         t.validate()  # a mistake in a folder's data is named now (file and line), not in a worker
-    ws.load(selected)
+    ws.survey(selected, opts.timeout)  # a folder's modules run in a child: never in this process
     key_of = cache_keys(ws, entries, opts)
     results = _read_cached(ws, entries, key_of, warn) if use_cache else {}
     todo = [e.id for e in entries if e.id not in results]
@@ -234,15 +240,15 @@ def run(ws, entries: list[catalog.Entry], opts: Options, use_cache: bool = True,
                 write_text(cache_file(key_of[eid]), json.dumps(results[eid], sort_keys=True))
         except OSError:
             pass  # a read-only cache is not an error
+    for e in entries:
+        ws.derivations.note_built_on(e.id, set(results[e.id].get("built_on", {})) | {e.source})
     return [Outcome.from_record(results[e.id]["outcome"], records_of(ws, e.id)) for e in entries]
 
 
 def _record(ws, eid: str, outcome: Outcome) -> dict:
     """An outcome as the cache keeps it, with the hashes of the other texts it was built on."""
-    try:
-        others = sorted(ws.built_on(eid) - {eid.split(":", 1)[0]})
-    except (Exception, SystemExit):  # noqa: BLE001 - a failed derivation was built on nothing more
-        others = []
+    known = ws.derivations.known_built_on(eid)  # nothing is derived here: a failure is built on nothing
+    others = sorted((known or set()) - {eid.split(":", 1)[0]})
     built = {}
     for tid in others:
         try:
@@ -290,13 +296,49 @@ def quiet_stdout():
         sys.stdout = before
 
 
+def derive_all(ws, ids: list[str], opts: Options, jobs: int | None = None) -> None:
+    """The results of the derivations of ``ids`` computed in supervised workers (each within its
+    budget) and brought into this process's workspace — so that a folder's code runs nowhere
+    else.  A result that cannot be brought back (it holds a class of the folder's own module) is
+    left to be computed here when it is asked for; a derivation that fails is recorded so."""
+    todo = [eid for eid in ids if not ws.derivations.known(eid) and ws.has_derivation(eid)]
+    if not todo:
+        return
+
+    def work(eid: str):
+        with quiet_stdout():
+            with time_limit(opts.timeout, WALL), time_limit(opts.timeout, CPU):
+                try:
+                    value = ws.result(eid)
+                except (Exception, SystemExit, GeneratorExit) as exc:  # noqa: BLE001 - the entry's failure
+                    return eid, {"error": _error(exc)}
+            try:
+                blob = pickle.dumps(value, protocol=pickle.HIGHEST_PROTOCOL)
+            except Exception:  # noqa: BLE001 - not sendable: computed where it is needed
+                return eid, {"local": True}
+            return eid, {"result": blob, "used": sorted(ws.used(eid)), "built_on": sorted(ws.built_on(eid))}
+
+    def done(_eid, got) -> None:
+        eid, res = got
+        if "error" in res:
+            ws.derivations.note_failure(eid, res["error"])
+        elif "result" in res:
+            try:
+                value = pickle.loads(res["result"])
+            except Exception:  # noqa: BLE001 - a class this process does not know: computed here if asked
+                return
+            ws.derivations.inject(eid, value, res["used"], res["built_on"])
+
+    map_grouped(work, families(ws, todo), jobs or min(len(todo), os.cpu_count() or 1), done, timeout=opts.timeout,
+                on_lost=lambda eid, why: (eid, {"error": f"the derivation's worker was lost: {why}"}))
+
+
 def families(ws, ids: list[str]) -> list[list[str]]:
     """``ids`` grouped by the module of their derivations (entries of one family build on the
     same steps: a worker that keeps to one derives them once), in catalog order."""
     out: dict[str, list[str]] = {}
     for eid in ids:
-        der = ws.derivation(eid)
-        out.setdefault(der.module if der is not None else "", []).append(eid)
+        out.setdefault(ws.module_of(eid) or "", []).append(eid)
     return list(out.values())
 
 

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import contextvars
 import hashlib
-import importlib.util
 import re
 import sys
 import traceback
@@ -34,10 +33,11 @@ from functools import cached_property
 from pathlib import Path
 
 from quasicentral.engine import errata as errata_mod
-from quasicentral.engine.catalog import CatalogError, Entry, load_file, read_toml, where
+from quasicentral.engine.catalog import CatalogError, Entry, load_file, read_bytes, read_toml, where
 from quasicentral.engine.fingerprint import SHIPPED_ROOT, TEXT_FILE, folder_fingerprint
 from quasicentral.engine.registry import Derivations, RegistryError, collect
 from quasicentral.notation.symbols import SymbolError, SymbolTable, table_from_toml
+from quasicentral.notation.timelimit import TimeLimitExceeded
 
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*\Z")
 _META_KEYS = {"id", "title", "title_en", "authors", "year", "language", "citation", "derivations",
@@ -188,22 +188,28 @@ class Text:
 
 
 def _import(text: Text, path: Path):
+    """The module compiled from its source itself: a bytecode file beside it is never read (a
+    folder could plant one that is not its source) and none is written into the folder."""
+    import types
+
     name = f"{text.module_prefix}.{path.stem}"
-    try:
-        digest = hashlib.sha256(path.read_bytes()).hexdigest()
-    except OSError as exc:
-        raise TextError(f"{path}: cannot read: {exc.strerror}") from None
+    source = read_bytes(path)  # a regular file of a text's size, or a TextError naming it
+    digest = hashlib.sha256(source).hexdigest()
     known = sys.modules.get(name)
     if known is not None and getattr(known, "__file__", None) == str(path) and \
             getattr(known, "__quasicentral_digest__", None) == digest:
         return known
-    spec = importlib.util.spec_from_file_location(name, path)
-    module = importlib.util.module_from_spec(spec)
+    module = types.ModuleType(name)
+    module.__file__ = str(path)
     module.__quasicentral_digest__ = digest
     sys.modules[name] = module  # classes defined there pickle by this name
     token = _LOADING.set(text)
     try:
-        spec.loader.exec_module(module)
+        exec(compile(source, str(path), "exec", dont_inherit=True), module.__dict__)  # noqa: S102 - the folder's own module
+    except TimeLimitExceeded as exc:
+        sys.modules.pop(name, None)
+        raise TextError(f"{_frame_in(path, exc)}: the module did not finish importing within its time "
+                        f"({exc}; --timeout allows more)") from None
     except (CatalogError, SymbolError, RegistryError) as exc:
         sys.modules.pop(name, None)
         raise TextError(f"{_frame_in(path, exc)}: {exc}") from None

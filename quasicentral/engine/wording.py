@@ -199,9 +199,9 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "en": lambda f, s: f"the {f.stage} failed: " + s.text(f.error),
         "cs": lambda f, s: f"selhal krok „{_STAGE_CS.get(f.stage, f.stage)}“: " + s.text(f.error)},
     Code.OUT_OF_TIME: {
-        "en": lambda f, s: (f"the {f.stage} ran out of its {s.num(f.seconds)} s of "
+        "en": lambda f, s: (f"the {f.stage} ran out of its {s.num(f.seconds, 'g')} s of "
                             + ("CPU time" if f.clock == "cpu" else "time") + " (raise --timeout to allow more)"),
-        "cs": lambda f, s: (f"krok „{_STAGE_CS.get(f.stage, f.stage)}“ vyčerpal svých {s.num(f.seconds)} s "
+        "cs": lambda f, s: (f"krok „{_STAGE_CS.get(f.stage, f.stage)}“ vyčerpal svých {s.num(f.seconds, 'g')} s "
                             + ("procesorového času" if f.clock == "cpu" else "času") + " (více dovolí --timeout)")},
     Code.NO_NUMERIC_FORM: {
         "en": lambda f, s: f"no numeric evaluation of {s.text(f.function)}",

@@ -261,3 +261,49 @@ def _watch(pool: _Pool, workers: list, answered: set, on_result, on_lost) -> Non
                 on_result(pool.items[j], on_lost(pool.items[j], "its worker vanished"))
         if len(answered) < len(pool.items):
             workers.append(pool.start([j for j in range(len(pool.items)) if j not in answered]))
+
+
+def in_child(func: Callable[[], R], timeout: float) -> R:
+    """``func()`` computed in a forked child process (its standard output to standard error),
+    its result sent back; an exception it raises is raised here.  A child that runs past
+    ``timeout`` seconds is killed, and one that ends without an answer (``os._exit``, a crash)
+    is reported: both as :class:`Lost`, with why."""
+    ctx = get_context("fork")
+    mine, theirs = ctx.Pipe(duplex=False)
+    parent = os.getpid()
+
+    def child() -> None:
+        die_with_parent(parent)
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        try:
+            os.dup2(2, 1)
+            sys.stdout = sys.stderr
+        except OSError:
+            pass
+        try:
+            payload = ("done", pickle.dumps(func(), protocol=pickle.HIGHEST_PROTOCOL))
+        except BaseException as exc:  # noqa: BLE001 - reported to the parent, which raises it
+            payload = ("error", _portable(exc))
+        theirs.send(payload)
+        theirs.close()
+        os._exit(0)
+
+    p = ctx.Process(target=child, daemon=True)
+    p.start()
+    theirs.close()
+    try:
+        if not mine.poll(timeout):
+            raise Lost(f"did not finish within {timeout:g} s")
+        try:
+            kind, payload = mine.recv()
+        except (EOFError, OSError):
+            p.join(timeout=1.0)
+            raise Lost(f"the process ended without an answer (exit code {p.exitcode})") from None
+        return pickle.loads(payload) if kind == "done" else _raise(pickle.loads(payload))
+    finally:
+        _kill(p)
+        mine.close()
+
+
+def _raise(exc: BaseException):
+    raise exc

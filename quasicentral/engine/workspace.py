@@ -13,6 +13,8 @@ a shipped text's id; their ``.py`` modules run only when their derivations are n
 
 from __future__ import annotations
 
+import os
+from dataclasses import replace
 from pathlib import Path
 
 from quasicentral.engine import catalog
@@ -32,8 +34,10 @@ class Workspace:
         self._by_root: dict[Path, Text] = {}
         self._by_id: dict[str, Text] = {}
         self._loaded: set[str] = set()
+        self._surveyed: dict[str, dict[str, Derivation]] = {}  # text id -> its derivations described, by a child
+        self._survey_pid: int | None = None
         store = DerivedStore(self._fingerprint_of, self._module_prefixes) if keep else None
-        self.derivations = Derivations(store, read_kept)
+        self.derivations = Derivations(store, read_kept, loader=self._load_text)
 
     # --- texts ---------------------------------------------------------------------------------
     def open(self, folder: str | Path) -> Text:
@@ -107,30 +111,93 @@ class Workspace:
                 self._loaded.add(t.id)
         return texts
 
+    def survey(self, texts: list[Text], seconds: float = 120.0) -> None:
+        """Learn which entries of ``texts`` have derivations, and in which modules, without
+        running a folder's code in this process: a user's modules are imported in a child
+        process (bounded by ``seconds``; a module that ends the process, hangs or fails is a
+        :class:`TextError` naming it), the shipped texts' here (they are the package's own)."""
+        from quasicentral.engine.registry import Derivations as Fresh
+        from quasicentral.engine.workers import GRACE_SECONDS, Lost, in_child
+        from quasicentral.notation.timelimit import CPU, WALL, time_limit
+
+        for t in texts:
+            if t.id in self._loaded or t.id in self._surveyed:
+                continue
+            if t.is_shipped:
+                self.load([t])
+                continue
+
+            def collect(t=t):
+                ds = Fresh()
+                with time_limit(seconds, WALL), time_limit(seconds, CPU):
+                    t.import_modules(ds)
+                # what this process may know of each derivation: everything but its function
+                return {eid: replace(d, func=None) for eid, d in ds.by_id.items()}
+            try:
+                self._surveyed[t.id] = in_child(collect, seconds + GRACE_SECONDS)
+            except Lost as exc:
+                raise TextError(f"{t.root}: importing the text's modules {exc} (--timeout bounds it)") from None
+            self._survey_pid = os.getpid()
+            t.loaded_fingerprint = t.fingerprint()
+
+    def _runs_code_here(self, tid: str) -> bool:
+        """A surveyed text's modules are imported only in other processes (the workers forked
+        from this one), never in the process that surveyed them."""
+        return tid not in self._surveyed or os.getpid() != self._survey_pid
+
+    def module_of(self, eid: str) -> str | None:
+        """The module of the derivation of ``eid`` (surveyed or loaded), else None."""
+        d = self.derivation(eid)
+        return d.module if d is not None else None
+
+    def has_derivation(self, eid: str) -> bool:
+        return self.module_of(eid) is not None
+
     def derivation(self, eid: str) -> Derivation | None:
+        """The derivation of ``eid``: the one its module defines, or — in the process that
+        surveyed its text without running its code — its description (``func`` None)."""
+        tid = eid.split(":", 1)[0]
+        if not self._runs_code_here(tid):
+            return self._surveyed[tid].get(eid)
         self._ensure(eid)
         return self.derivations.get(eid)
 
     def result(self, eid: str):
-        """The result of the derivation of ``eid`` (computed, or read back from the store)."""
-        self._ensure(eid)
+        """The result of the derivation of ``eid`` (computed, brought back from a worker, or read
+        back from the store)."""
+        if not self.derivations.known(eid):
+            self._ensure(eid)
         return self.derivations.result(eid)
 
     def used(self, eid: str) -> frozenset[str]:
-        self._ensure(eid)
+        if not self.derivations.known(eid):
+            self._ensure(eid)
         return self.derivations.used(eid)
 
     def built_on(self, eid: str) -> frozenset[str]:
-        self._ensure(eid)
+        if not self.derivations.known(eid):
+            self._ensure(eid)
         return self.derivations.built_on(eid)
 
     def _ensure(self, eid: str) -> None:
         tid = eid.split(":", 1)[0]
         if tid not in self._loaded:
+            if not self._runs_code_here(tid):
+                raise TextError(f"{eid}: the result is not at hand, and the text's code does not run in "
+                                "this process (its workers compute it)")
             try:
                 self.load([self.text(tid)])
             except KeyError:
                 pass  # no such text: the derivations say so
+
+    def _load_text(self, tid: str) -> None:
+        """A text another's derivation builds on: its derivations loaded where they may run."""
+        try:
+            text = self.text(tid)
+        except KeyError:
+            return
+        if tid not in self._loaded and self._runs_code_here(tid):
+            self.load([text])
 
     def forget(self, text: Text) -> None:
         """Drop ``text`` (its derivations and results, and every result built on it), so that
@@ -139,6 +206,7 @@ class Workspace:
         if self._by_id.get(text.id) is text:
             self._by_id.pop(text.id)
         self._loaded.discard(text.id)
+        self._surveyed.pop(text.id, None)
         self.derivations.remove_text(text.id)
 
     # --- what the store keys results by ----------------------------------------------------

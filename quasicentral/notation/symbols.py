@@ -301,7 +301,47 @@ def table_from_toml(data: dict, where: str) -> SymbolTable:
         key = f"{where}: functions.{name}"
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key),
                                 variables=variables_of[name], meaning=_meaning(raw, key)))
+    _check_ranges(specs, where)
     return SymbolTable(tuple(specs))
+
+
+def _check_ranges(specs: list[SymbolSpec], where: str) -> None:
+    """Every range a sampler can draw from: its ends numbers (±oo allowed) or expressions in
+    other symbols, low below high, no range that depends on itself (through other ranges or
+    definitions)."""
+    by_obj = {s.obj: s for s in specs}
+    for s in specs:
+        if s.range is None:
+            continue
+        key = f"{where}: symbols.{s.name}.range"
+        lo, hi = s.range
+        for end in (lo, hi):
+            if end.has(sp.zoo, sp.nan) or end is sp.zoo or end is sp.nan:
+                raise SymbolError(f"{key}: {end} is not a number (an end is a number, ±oo, or an expression)")
+        if lo.is_number and hi.is_number:
+            if lo.is_real and hi.is_real or lo in (sp.oo, -sp.oo) or hi in (sp.oo, -sp.oo):
+                if lo == hi:
+                    raise SymbolError(f"{key}: [{lo}, {hi}] is a single point: a range has a width to sample")
+                if bool(lo > hi):
+                    raise SymbolError(f"{key}: [{lo}, {hi}] is empty (the low end comes first)")
+            elif sp.re(lo) == sp.re(hi) and sp.im(lo) == sp.im(hi):
+                raise SymbolError(f"{key}: [{lo}, {hi}] is a single point: a box has two distinct corners")
+
+    def depends(s: SymbolSpec) -> set:
+        ends = s.range if s.range is not None else ((s.definition,) if s.definition is not None else ())
+        return {x for e in ends for x in e.free_symbols if x in by_obj and x != s.obj} | (
+            {s.obj} if any(s.obj in e.free_symbols for e in ends) else set())
+
+    def visit(obj, stack):
+        if obj in stack:
+            cycle = " → ".join(by_obj[o].name for o in stack[stack.index(obj):] + [obj])
+            raise SymbolError(f"{where}: symbols.{by_obj[obj].name}.range: the range depends on itself ({cycle})")
+        for dep in depends(by_obj[obj]):
+            visit(dep, stack + [obj])
+
+    for s in specs:
+        if s.range is not None or s.definition is not None:
+            visit(s.obj, [])
 
 
 def _function_variables(raw: dict, objs: dict, key: str) -> tuple[str, ...]:
