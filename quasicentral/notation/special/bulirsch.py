@@ -21,9 +21,11 @@ from flint import acb
 from sympy.core.function import ArgumentIndexError
 
 from quasicentral.notation.special.base import (
-    DLMFFunction, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, pv_union, real,
+    DLMFFunction, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, negative_real,
+    pv_union, real,
 )
 from quasicentral.notation.special.carlson import CarlsonRD, CarlsonRF, CarlsonRJ
+from quasicentral.notation.special.legendre import pi_complete_mp
 
 
 def carlson_args(x, kc):
@@ -64,9 +66,14 @@ class BulirschCel(DLMFFunction):
     @mp_route()
     def mp(cls, kc, p, a, b):
         kc2 = kc * kc
-        rj = mpmath.elliprj(0, kc2, 1, p)
         if is_real(kc, p) and real(p) < 0:
-            rj = real(rj)
+            # the principal value through Π's (19.6.5): R_J(0, k_c², 1, p) = 3(Π(1 − p, k) − K)/(1 − p)
+            m = 1 - kc2
+            n = 1 - p
+            K = mpmath.ellipk(m)
+            rj = 3 * (K - pi_complete_mp(m / n, m, kc2) - K) / n
+        else:
+            rj = mpmath.elliprj(0, kc2, 1, p)
         return a * mpmath.elliprf(0, kc2, 1) + (b - p * a) / 3 * rj
 
     @ball_route
@@ -201,7 +208,7 @@ class BulirschEl3(DLMFFunction):
             return self.diff_definition(argindex)
         raise ArgumentIndexError(self, argindex)
 
-    @mp_route()
+    @mp_route(ladder=lambda x, kc, p: not negative_real(1 + p * x * x))
     def mp(cls, x, kc, p):
         args = carlson_args(x, kc)
         w = 1 + p * x * x

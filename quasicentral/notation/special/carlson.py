@@ -16,7 +16,8 @@ from flint import acb
 from sympy.core.function import ArgumentIndexError
 
 from quasicentral.notation.special.base import (
-    DLMFFunction, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, pv_union, real,
+    DLMFFunction, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, negative_real, pv_union,
+    real,
 )
 
 
@@ -129,7 +130,9 @@ class CarlsonRJ(DLMFFunction):
         half = sp.Rational(1, 2)
         return r_derivative(3 * half, (half, half, half, sp.S.One), self.args, argindex - 1)
 
-    @mp_route()
+    # mpmath's principal value for p < 0 is slow (seconds at 30 digits for Boost's arguments):
+    # one rung only there
+    @mp_route(ladder=lambda x, y, z, p: not negative_real(p))
     def mp(cls, x, y, z, p):
         value = mpmath.elliprj(x, y, z, p)
         if is_real(x, y, z, p) and real(p) < 0 and min(real(x), real(y), real(z)) >= 0:
@@ -250,14 +253,14 @@ class CarlsonR(DLMFFunction):
     True
     True
     >>> sp.latex(CarlsonR(h, sp.Tuple(h, h, h), sp.Tuple(*sp.symbols("x y z"))))
-    'R_{-\\frac{1}{2}}\\left(\\frac{1}{2}, \\frac{1}{2}, \\frac{1}{2}; x, y, z\\right)'
+    'R_{- \\frac{1}{2}}\\left(\\frac{1}{2}, \\frac{1}{2}, \\frac{1}{2}; x, y, z\\right)'
     """
 
     nargs = 3
     ball = None
 
     @classmethod
-    def eval(cls, a, b, z):
+    def eval(cls, a, b, z):  # noqa: D102 - validation only
         if not isinstance(b, sp.Tuple) or not isinstance(z, sp.Tuple) or len(b) != len(z) or not len(b):
             raise ValueError("CarlsonR(a, b, z): b and z are Tuples of one length")
 
@@ -277,7 +280,7 @@ class CarlsonR(DLMFFunction):
             return None
         return sp.Add(*[r_derivative(a, b, z, j) * zj.diff(s) for j, zj in enumerate(z) if zj.has(s)])
 
-    @mp_route()
+    @mp_route(ladder=False)  # the quadrature checks its own error
     def mp(cls, a, b, z):
         b = [mpmath.mpmathify(x) for x in b]
         z = [mpmath.mpmathify(x) for x in z]

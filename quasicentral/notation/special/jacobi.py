@@ -169,17 +169,11 @@ class JacobiBase(DLMFFunction):
             return (letter_dk(p, z, k) * den - num * letter_dk(q, z, k)) / den ** 2
         raise ArgumentIndexError(self, argindex)
 
-    @classmethod
+    @mp_route()
     def mp(cls, z, k):
-        prec = mpmath.mp.prec
-        with mpmath.workprec(prec + 24):
-            z, k = mpmath.mpmathify(z), mpmath.mpmathify(k)
-            m, _ = parameters(k)
-            value = mpmath.ellipfun(cls.name, z, m=m)
-        value = +value
-        if is_real(z, k):
-            value = real(value)
-        return value
+        m, _ = parameters(k)
+        value = mpmath.ellipfun(cls.name, z, m=m)
+        return real(value) if is_real(z, k) else value
 
     @classmethod
     def ball_value(cls, z, k):
@@ -455,7 +449,7 @@ class JacobiInverseBase(DLMFFunction):
     def fdiff(self, argindex=1):
         if argindex not in (1, 2):
             raise ArgumentIndexError(self, argindex)
-        return sp.simplify(self.diff_definition(argindex)) if argindex == 1 else self.diff_definition(argindex)
+        return self.diff_definition(argindex)
 
     @mp_route()
     def mp(cls, x, k):
