@@ -21,7 +21,7 @@ from flint import acb
 from sympy.core.function import ArgumentIndexError
 
 from quasicentral.notation.special.base import (
-    DLMFFunction, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, negative_real,
+    DLMFFunction, rd, rj, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, negative_real,
     pv_union, real,
 )
 from quasicentral.notation.special.carlson import CarlsonRD, CarlsonRF, CarlsonRJ
@@ -71,10 +71,10 @@ class BulirschCel(DLMFFunction):
             m = 1 - kc2
             n = 1 - p
             K = mpmath.ellipk(m)
-            rj = 3 * (K - pi_complete_mp(m / n, m, kc2) - K) / n
+            r_j = -3 * pi_complete_mp(m / n, m, kc2) / n
         else:
-            rj = mpmath.elliprj(0, kc2, 1, p)
-        return a * mpmath.elliprf(0, kc2, 1) + (b - p * a) / 3 * rj
+            r_j = rj(0, kc2, 1, p)
+        return a * mpmath.elliprf(0, kc2, 1) + (b - p * a) / 3 * r_j
 
     @ball_route
     def ball(kc, p, a, b, analytic=False):
@@ -164,7 +164,7 @@ class BulirschEl2(DLMFFunction):
     @mp_route()
     def mp(cls, x, kc, a, b):
         args = carlson_args(x, kc)
-        return a * x * mpmath.elliprf(*args) + (b - a) / 3 * x ** 3 * mpmath.elliprd(*args)
+        return a * x * mpmath.elliprf(*args) + (b - a) / 3 * x ** 3 * rd(*args)
 
     @ball_route
     def ball(x, kc, a, b, analytic=False):
@@ -212,10 +212,7 @@ class BulirschEl3(DLMFFunction):
     def mp(cls, x, kc, p):
         args = carlson_args(x, kc)
         w = 1 + p * x * x
-        rj = mpmath.elliprj(*args, w)
-        if is_real(x, kc, p) and real(w) < 0:
-            rj = real(rj)
-        return x * mpmath.elliprf(*args) + (1 - p) / 3 * x ** 3 * rj
+        return x * mpmath.elliprf(*args) + (1 - p) / 3 * x ** 3 * rj(*args, w)
 
     @ball_route
     def ball(x, kc, p, analytic=False):

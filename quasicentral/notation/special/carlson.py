@@ -16,7 +16,7 @@ from flint import acb
 from sympy.core.function import ArgumentIndexError
 
 from quasicentral.notation.special.base import (
-    DLMFFunction, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, negative_real, pv_union,
+    DLMFFunction, rd, rj, ball_route, exact_real, is_real, may_meet_cut, mp_route, nan_ball, negative_real, pv_union,
     real,
 )
 
@@ -99,7 +99,7 @@ class CarlsonRD(DLMFFunction):
 
     @mp_route()
     def mp(cls, x, y, z):
-        return mpmath.elliprd(x, y, z)
+        return rd(x, y, z)
 
     @ball_route
     def ball(x, y, z, analytic=False):
@@ -134,10 +134,7 @@ class CarlsonRJ(DLMFFunction):
     # one rung only there
     @mp_route(ladder=lambda x, y, z, p: not negative_real(p))
     def mp(cls, x, y, z, p):
-        value = mpmath.elliprj(x, y, z, p)
-        if is_real(x, y, z, p) and real(p) < 0 and min(real(x), real(y), real(z)) >= 0:
-            return real(value)
-        return value
+        return rj(x, y, z, p)
 
     @ball_route
     def ball(x, y, z, p, analytic=False):

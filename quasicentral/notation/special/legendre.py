@@ -17,8 +17,8 @@ from flint import acb, arb
 from sympy.core.function import ArgumentIndexError
 
 from quasicentral.notation.special.base import (
-    DLMFFunction, ball_parameters, ball_route, exact_real, is_real, lost_bits, may_meet,
-    may_meet_cut, mp_route, nan_ball, parameters, pv_union, real,
+    DLMFFunction, rd, rj, ball_parameters, ball_route, exact_real, is_real, lost_bits, may_meet,
+    may_meet_cut, mp_route, nan_ball, negative_real, parameters, pv_union, real,
 )
 
 
@@ -47,7 +47,7 @@ def with_delta_guard(phi, mc, body):
 
 def d_complete_mp(mc):
     """D(k) = R_D(0, k′², 1)/3 (DLMF 19.25.1)."""
-    return mpmath.elliprd(0, mc, 1) / 3
+    return rd(0, mc, 1) / 3
 
 
 def d_incomplete_mp(phi, mc):
@@ -55,7 +55,7 @@ def d_incomplete_mp(phi, mc):
     D(φ + jπ) = D(φ) + 2jD(k) elsewhere."""
     j, psi = reduce_amplitude(phi)
     s, c = mpmath.sin(psi), mpmath.cos(psi)
-    value = s ** 3 * mpmath.elliprd(c * c, c * c + mc * s * s, 1) / 3
+    value = s ** 3 * rd(c * c, c * c + mc * s * s, 1) / 3
     return value + 2 * j * d_complete_mp(mc) if j else value
 
 
@@ -112,7 +112,7 @@ def pi_complete_mp(n, m, mc):
         return K - pi_complete_mp(real(m) / real(n), m, mc)
     if n == 0:
         return K
-    return K + n / 3 * mpmath.elliprj(0, mc, 1, 1 - n)
+    return K + n / 3 * rj(0, mc, 1, 1 - n)
 
 
 def pi_incomplete_mp(phi, n, m, mc):
@@ -123,10 +123,7 @@ def pi_incomplete_mp(phi, n, m, mc):
     c2, d2, w = c * c, c * c + mc * s * s, 1 - n * s * s
     value = s * mpmath.elliprf(c2, d2, 1)
     if n != 0:
-        rj = mpmath.elliprj(c2, d2, 1, w)
-        if is_real(phi, n, m) and real(w) < 0 and real(d2) >= 0:
-            rj = real(rj)
-        value += n / 3 * s ** 3 * rj
+        value += n / 3 * s ** 3 * rj(c2, d2, 1, w)
     return value + 2 * j * pi_complete_mp(n, m, mc) if j else value
 
 
@@ -654,7 +651,7 @@ class JacobiZeta(DLMFFunction):
         d2 = c * c + mc * s * s
         with mpmath.workprec(mpmath.mp.prec + lost_bits(mc)):
             K = mpmath.ellipk(m)
-        return m / (3 * K) * s * c * mpmath.sqrt(d2) * mpmath.elliprj(0, mc, 1, d2)
+        return m / (3 * K) * s * c * mpmath.sqrt(d2) * rj(0, mc, 1, d2)
 
     @ball_route
     def ball(phi, k, analytic=False):
