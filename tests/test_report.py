@@ -298,6 +298,7 @@ def _flat(s: str) -> str:
 
 
 @pytestmark_latex
+@pytest.mark.slow  # compiles every document (latexmk): about a minute on 2 cores; CI runs it
 def test_every_document_compiles(compiled, tmp_path):
     """latexmk builds every report and handout without a LaTeX error or undefined reference,
     and the first page of each PDF has ink on it."""
@@ -314,6 +315,7 @@ def test_every_document_compiles(compiled, tmp_path):
 
 
 @pytestmark_latex
+@pytest.mark.slow  # compiles every document (latexmk): about a minute on 2 cores; CI runs it
 def test_logs_have_no_overfull_box_and_no_warning(compiled):
     bad = {}
     for name, (_, log, _, _) in compiled.items():
@@ -330,6 +332,7 @@ _IDENTIFIER = re.compile(r"\b[A-Za-z][A-Za-z0-9]*_[A-Za-z0-9_]+\b")
 
 
 @pytestmark_latex
+@pytest.mark.slow  # compiles every document (latexmk): about a minute on 2 cores; CI runs it
 def test_pdfs_hold_no_raw_code(compiled):
     bad = {}
     for name, (_, _, full, _) in compiled.items():
@@ -375,6 +378,7 @@ def english_phrases() -> list[str]:
 
 
 @pytestmark_latex
+@pytest.mark.slow  # compiles every document (latexmk): about a minute on 2 cores; CI runs it
 def test_czech_documents_hold_no_english(compiled):
     phrases = english_phrases()
     assert len(phrases) > 50
@@ -390,6 +394,7 @@ def test_czech_documents_hold_no_english(compiled):
 
 
 @pytestmark_latex
+@pytest.mark.slow  # compiles every document (latexmk): about a minute on 2 cores; CI runs it
 def test_page_one_of_a_report_has_the_summary_and_the_errata_table(compiled):
     from quasicentral.documents.prose import WORDS
 

@@ -17,6 +17,7 @@ import mpmath
 import sympy as sp
 
 from quasicentral.notation.integrals import PERIODS_WORTH_FOLDING, period, prepare
+from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
 
 GUARD_BITS = 20  # bits a ball is computed with beyond the working precision
 SMOOTH_END_RADIUS = 2.0 ** -30  # the disc around an end of the path that must be free of singularities
@@ -217,6 +218,10 @@ class _Source:
             return _BINARY[e.func].format(a=self.emit(e.args[0]), b=self.emit(e.args[1]))
         if isinstance(e, sp.elliptic_e):
             return f"acb.elliptic_e({self.emit(e.args[0])})"
+        special = SPECIAL_FUNCTIONS.get(type(e).__name__)
+        if special is type(e) and special.ball is not None and not any(isinstance(a, sp.Tuple) for a in e.args):
+            args = ", ".join(self.emit(a) for a in e.args)  # each class's own rigorous route
+            return f"{self.constant(special.ball)}({args}, analytic=an)"
         if isinstance(e, sp.factorial) and e.args[0].is_Integer:
             return f"acb({self.constant(int(sp.factorial(e.args[0])))})"
         if isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 3:

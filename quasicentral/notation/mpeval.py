@@ -17,6 +17,7 @@ from sympy.printing.pycode import MpmathPrinter
 from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_mpf, ball_function, ball_value,
                                          compile_path, flint_precision, mp_to_acb)
 from quasicentral.notation.integrals import infinite_end, prepare
+from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
 
 QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
 QUAD_PIECES_GAIN = 100  # ... and the least gain in its error estimate for which it cuts further
@@ -92,6 +93,8 @@ MPMATH_NAMES = MappingProxyType({
     "elliptic_e": _ball_first("elliptic_e", "elliptic_e_inc", mpmath.ellipe),
     "elliptic_pi": mpmath.ellippi,  # real only for some n, φ, m: mpmath decides
     "quad": _quad,
+    # DLMF chapters 19, 20 and 22: each class evaluates itself (modulus k, guard bits inside)
+    **{name: cls.mp for name, cls in SPECIAL_FUNCTIONS.items()},
 })
 
 

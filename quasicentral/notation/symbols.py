@@ -31,6 +31,7 @@ from types import MappingProxyType
 import sympy as sp
 
 from quasicentral.notation import transcription
+from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
 from quasicentral.notation.units import DIMENSIONLESS, UnitError, dim_text, parse_dim  # noqa: F401 - re-exported
 
 
@@ -143,6 +144,7 @@ FUNCTIONS: MappingProxyType = MappingProxyType({
     **_CONSTANTS,
     "ln": sp.log, "Eq": printed_eq, "Symbol": _symbol, "Function": _function, "Approx": _approx,
     "D": D, "Fj": Fj, "Ej": Ej, "Kc": Kc, "Ec": Ec, "arccotg": arccotg,
+    **SPECIAL_FUNCTIONS,  # DLMF chapters 19, 20 and 22 in DLMF's notation (modulus k)
 })
 ASSUMPTIONS = ("positive", "nonnegative", "negative", "nonpositive", "real", "integer", "complex")
 #: the names a text may not declare (the forms a transcription is built from); every other
