@@ -77,6 +77,14 @@ def _text_id(root: Path) -> str | None:
     return tid if isinstance(tid, str) else None
 
 
+def _is_identity_text(root: Path) -> bool:
+    try:
+        with open(root / TEXT_FILE, "rb") as f:
+            return tomllib.load(f).get("check") == "identity"
+    except (OSError, tomllib.TOMLDecodeError):
+        return False
+
+
 def text_folders(specs: list[str] | None) -> list[tuple[str, Path]] | None:
     """(id, folder) of each text ``specs`` names — folders, or shipped ids; none named: the
     shipped texts — or ``None`` where a name does not resolve plainly."""
@@ -85,6 +93,8 @@ def text_folders(specs: list[str] | None) -> list[tuple[str, Path]] | None:
         tid = _text_id(toml.parent)
         if tid is None:
             return None
+        if _is_identity_text(toml.parent):  # left to the identity mode (texts.shipped)
+            continue
         shipped[tid] = toml.parent.resolve()
     if not specs:
         return sorted(shipped.items())
