@@ -176,30 +176,61 @@ def bigop(p, head: str) -> N.Node:
 
 
 def _bigop_body(p, head, t, var, lo, hi) -> N.Node:
+    """The body of a sum or product: the factors that follow, up to the last one that depends
+    on the index (∏ z_j^{-b_j} R(…) is (∏ z_j^{-b_j}) R(…)); a subscript indexed by the index
+    over a few integers is written out term by term."""
     diffs = p.diffs[-1] if p.diffs else None  # the differential of an enclosing integral ends the body
     n0 = len(diffs) if diffs is not None else 0
     start, outer = p.i, p.sub_letters
     p.sub_letters = set()
-    body = p.term(integral=diffs)
+    ends, depends = [], []
+    while True:
+        before = set(p.sub_letters)
+        divide = p.tok.is_("/")
+        if divide:
+            p.next()
+        f = p.factor()
+        uses = var.name in (p.sub_letters - before) or any(isinstance(x, N.Sym) and x.name == var.name for x in N.walk(f))
+        ends.append(p.i)
+        depends.append(uses)
+        if (diffs is not None and len(diffs) > n0) or p.at_term_end() or p.tok.is_(r"\times", r"\cdot"):
+            break
+    last = max((j for j, d in enumerate(depends) if d), default=len(ends) - 1)
+    if diffs is not None and len(diffs) > n0:
+        last = len(ends) - 1  # an integrand ends at its differential
+    end = ends[last]
     used, p.sub_letters = p.sub_letters, outer | p.sub_letters
     if var.name not in used:
+        p.i = start
+        body = _factors(p, end)
         return N.call(head, body, N.Tup((var, lo, hi), True))
     ints = [int(x.text) if isinstance(x, N.Num) and x.text.isdigit() else None for x in (lo, hi)]
     if None in ints or not 0 <= ints[1] - ints[0] <= 12:
         raise p.error(f"a {head.lower()} whose terms index a subscript by {var.name} "
                       "(only a few integers are written out)", t)
-    end, parts = p.i, []
+    parts = []
     for value in range(ints[0], ints[1] + 1):
         p.i = start
         if diffs is not None:
             del diffs[n0:]
         p.letters[var.name] = str(value)
         p.values[var.name] = N.Num(str(value))
-        parts.append(p.term(integral=diffs))
-    p.i = end
+        parts.append(_factors(p, end))
     p.values.pop(var.name, None)
     p.letters.pop(var.name, None)
     return N.add(*parts) if head == "Sum" else N.mul(*parts)
+
+
+def _factors(p, end: int) -> N.Node:
+    """The product of the factors from the cursor to ``end`` (re-read, so that bindings apply)."""
+    value = N.ONE
+    while p.i < end:
+        divide = p.tok.is_("/")
+        if divide:
+            p.next()
+        f = p.factor()
+        value = N.div(value, f) if divide else (N.apply_ops(value, f) if N.has_op(value) else N.mul(value, f))
+    return value
 
 
 def limit(p) -> N.Node:
