@@ -499,7 +499,7 @@ OVERRIDES.update({
         "Eq(q, x + (y - x)*(z - x)/(p - x))", "Eq(xi, y*z/x)", "Eq(eta, p*q/x)") + POSITIVE_XYZ),
     "19.21.14": Override("q, ξ, η as 19.21.13", constraints=("Eq(q, x + (y - x)*(z - x)/(p - x))", "Eq(xi, y*z/x)", "Eq(eta, p*q/x)")),
     "19.25.17": Override("x, y, z as 19.25.18", constraints=("Eq(x, c - 1)", "Eq(y, c - k**2)", "Eq(z, c)", C_PHI)),
-    "19.25.18": Override("a tuple equation: three relations", printed=("Eq(x, c - 1)", "Eq(y, c - k**2)", "Eq(z, c)"), kind="definition"),
+    "19.25.18": Override("x, y, z are defined here", kind="definition"),
     "19.25.20": Override("r = 1/x² (the prose)", constraints=("Eq(r, 1/x**2)",)),
     "19.25.21": Override("r = 1/x² (the prose)", constraints=("Eq(r, 1/x**2)",)),
     "19.25.22": Override("r = 1/x² (the prose)", constraints=("Eq(r, 1/x**2)",)),
@@ -567,4 +567,20 @@ OVERRIDES.update({
     "19.32.4": Override("z(p) is a function of p (19.32.1)", options={"applied": {"z"}}),
     "19.36.11": Override("T², M² as 19.36.10 prints them", constraints=("Eq(T, sqrt(1.46971531731))", "Eq(M, sqrt(2.46209302060))")),
     "19.36.9": Override("T, M are the limits of the sequences (the prose)", note="T and M are the common limits of the sequences of 19.36.6"),
+})
+
+OVERRIDES.update({
+    **{f"22.16.{n}": Override("x = F(φ, k) (22.16.10)", constraints=("Eq(x, EllipticF(phi, k))",)) for n in (11, 12, 13)},
+    "22.16.10": Override("x = F(φ, k) defines φ = am(x, k) for 22.16.11-13", kind="definition"),
+    **{f"22.15.{n}": Override("ξ, η, ζ are defined by this formula (22.15(i))", kind="definition") for n in (1, 2, 3)},
+    **{f"19.26.{n}": Override("μ (or ξ, η, ζ) is defined by this formula", kind="definition") for n in (2, 3, 5, 12)},
+    "19.26.14": Override("p, q, ξ, η as 19.26.15 gives them", constraints=(
+        "Eq(q, x + (y - x)**2/(p - x))", "Eq(xi, y**2/x)", "Eq(eta, p*q/x)", "Gt(x, 0)", "Gt(y, 0)")),
+    "19.26.15": Override("q, ξ, η are defined by this formula", kind="definition"),
+})
+
+OVERRIDES.update({
+    "19.26.6": Override("μ as 19.26.2 gives it; λ, x, y, z > 0", constraints=(LAMBDA_MU, "Gt(lamda, 0)") + POSITIVE_XYZ),
+    "19.26.23": Override("α, β are defined here, λ by 19.26.19", constraints=(LAMBDA_DUP,) + POSITIVE_XYZ + ("Gt(p, 0)",)),
+    "19.26.4": Override("ξ, η, ζ and their primes are defined here", kind="definition"),
 })

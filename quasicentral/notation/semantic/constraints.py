@@ -106,6 +106,10 @@ def _text(node: N.Node) -> str:
 
 
 def _relation(op: str, lhs: N.Node, rhs: N.Node, rels: list[str], real: set[str]) -> None:
+    if op == "Eq" and isinstance(lhs, N.Tup) and isinstance(rhs, N.Tup) and len(lhs.items) == len(rhs.items):
+        for a, b in zip(lhs.items, rhs.items):  # (ξ, η) = (x + λ, y + λ): one per member
+            _relation(op, a, b, rels, real)
+        return
     infinite = {N.Const("oo"), N.neg(N.Const("oo"))}
     if op in ("Lt", "Le", "Gt", "Ge"):
         for side in (lhs, rhs):

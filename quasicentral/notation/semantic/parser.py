@@ -191,7 +191,12 @@ class Parser:
         out: list[N.Node] = []
         for j, op in enumerate(ops):
             head = members[0] if op == "Eq" and all(o == "Eq" for o in ops[:j]) else members[j]
-            out.append(N.Rel(op, head, members[j + 1]))
+            rhs = members[j + 1]
+            if (op == "Eq" and isinstance(head, N.Tup) and isinstance(rhs, N.Tup)
+                    and len(head.items) == len(rhs.items)):  # (x, y, z) = (a, b, c): one per member
+                out += [N.Rel(op, a, b) for a, b in zip(head.items, rhs.items)]
+            else:
+                out.append(N.Rel(op, head, rhs))
         return out
 
     # --- sums --------------------------------------------------------------------------------
