@@ -172,6 +172,27 @@ FUNCS = {
     **{f"JacobiTheta{j}": (lambda j: lambda z, q: mp.jtheta(j, z, q))(j) for j in (1, 2, 3, 4)},
     "CarlsonR": _carlson_r,
 }
+#: Our own routes (above) are the reference; with the special functions merged
+#: (quasicentral.notation.special) their ``mp`` methods evaluate the contract's names instead,
+#: unless DLMF_NUMERIC=helper asks for this file's routes.
+HELPER = dict(FUNCS)
+
+
+def _use_special() -> None:
+    import os
+
+    if os.environ.get("DLMF_NUMERIC") == "helper":
+        return
+    try:
+        from quasicentral.notation.special import FUNCTIONS as SPECIAL
+    except ImportError:
+        return
+    for name, cls in SPECIAL.items():
+        FUNCS[name] = (lambda c: lambda *a: c.mp(*[tuple(x) if isinstance(x, list) else x for x in a]))(cls)
+
+
+_use_special()
+
 ELEMENTARY = {
     sp.sin: mp.sin, sp.cos: mp.cos, sp.tan: mp.tan, sp.cot: mp.cot, sp.sec: mp.sec, sp.csc: mp.csc,
     sp.asin: mp.asin, sp.acos: mp.acos, sp.atan: mp.atan, sp.sinh: mp.sinh, sp.cosh: mp.cosh,

@@ -159,7 +159,9 @@ AUX = "auxiliary quantities of the neighbouring formulas or the prose are not at
 KNOWN = {
     **{f"dlmf-19:{n}": PV for n in ("19.6.5", "19.6.6", "19.6.15-d", "19.20.8-b", "19.20.9", "19.20.14", "19.20.17",
                                     "19.21.12", "19.25.4")},
-    **{f"dlmf-19:{n}": QUAD for n in ("19.16.12", "19.28.4")},
+    **{f"dlmf-19:{n}": QUAD for n in ("19.16.11", "19.16.12", "19.16.19", "19.19.3", "19.23.10", "19.28.1", "19.28.2",
+                                      "19.28.3", "19.28.4")},
+    "dlmf-19:19.28.9": "DLMF: holds for real x, y with x + y ≤ π/2 only; no condition is printed",
     **{f"dlmf-22:{n}": QUAD for n in ("22.16.24", "22.16.25", "22.16.26")},
     "dlmf-19:19.6.7": "F(π/2, 1) = ∞ exactly: mpmath at a rounded π/2 is finite",
     "dlmf-19:19.9.16": "θ is only bounded (the formula's constraint), not given",
@@ -181,11 +183,29 @@ KNOWN = {
 }
 
 
+#: Where quasicentral.notation.special's values differ from this helper's (reported to its
+#: author): K′ beyond |ph k| ≤ π/2 (19.2.9), branches of R_J, R_D and of the inverse Jacobian
+#: functions off DLMF's stated ranges.
+SPECIAL = "quasicentral.notation.special differs from DLMF here (reported): "
+SPECIAL_DIFFERS = {
+    "dlmf-19:19.2.9-upper": SPECIAL + "K′(k) for π/2 < ph k < π is not K(k′) − 2iK(−k)",
+    "dlmf-19:19.2.9-lower": SPECIAL + "K′(k) for −π < ph k < −π/2 is not K(k′) + 2iK(−k)",
+    "dlmf-19:19.20.6-a": SPECIAL + "R_J at negative arguments (outside C∖(−∞,0] of §19.16)",
+    "dlmf-19:19.20.18": SPECIAL + "R_D at negative arguments (outside C∖(−∞,0] of §19.16)",
+    "dlmf-19:19.20.11": "the O-term's side y → 0+ is not kept by the sampler",
+    "dlmf-19:19.18.14": SPECIAL + "R_{-a}(1/2, 1/2; x + y, x − y) for x < y",
+    "dlmf-19:19.18.15": SPECIAL + "R_{-a}(1/2, 1/2; t + r, t − r) for t < r",
+    **{f"dlmf-22:22.15.{n}": SPECIAL + "the inverse functions for k > 1" for n in (18, 19, 21)},
+}
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("tid,entry", ENTRIES, ids=IDS)
 def test_both_sides_agree_numerically(tid, entry):
     if entry["id"] in KNOWN:
         pytest.xfail(KNOWN[entry["id"]])
+    if entry["id"] in SPECIAL_DIFFERS and D.FUNCS is not D.HELPER and D.FUNCS != D.HELPER:
+        pytest.xfail(SPECIAL_DIFFERS[entry["id"]])
     try:
         outcome = D.check(entry, TEXTS[tid])
     except D.Unevaluable as exc:
