@@ -238,7 +238,7 @@ def _agreed(a, b, want: int) -> tuple[str, int]:
         if a is None or b is None:
             return "", 0
         a, b = mpmath.mpc(a), mpmath.mpc(b)
-        (sr, nr), (si, ni) = _agreed(a.real, b.real, want), _agreed(a.imag, b.imag, want)
+        (_, nr), (_, ni) = _agreed(a.real, b.real, want), _agreed(a.imag, b.imag, want)
         n = min(nr, ni)
         if n == 0:
             return "", 0
