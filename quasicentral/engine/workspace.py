@@ -8,6 +8,8 @@ a shipped text's id; their ``.py`` modules run only when their derivations are n
 
 >>> ws = Workspace()
 >>> [t.id for t in ws.shipped()]
+['brepta1953', 'dlmf-19', 'dlmf-22', 'pendulum']
+>>> [t.id for t in ws.papers()]   # what a command works on when no text is named
 ['brepta1953', 'pendulum']
 """
 
