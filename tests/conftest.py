@@ -55,7 +55,7 @@ def outcomes(session_cache, tmp_path_factory, worker_id):
 
     shared = _session_dir(tmp_path_factory, worker_id)
     ws = shipped.workspace()
-    entries = [e for t in ws.shipped() for e in t.entries.values()]
+    entries = [e for t in ws.papers() for e in t.entries.values()]
     with FileLock(str(shared / "verdict-cache.lock")):
         # cold verdicts for the first worker (derivations other tests kept are read back),
         # read back by the others

@@ -14,7 +14,7 @@ from quasicentral.engine.workspace import Workspace
 @lru_cache(maxsize=1)
 def workspace() -> Workspace:
     ws = Workspace()
-    ws.load(ws.shipped())
+    ws.load(ws.papers())
     return ws
 
 
@@ -52,7 +52,7 @@ def derivation(eid: str):
 def records():
     """The errata and the cleared suspects of the shipped texts, merged (by id)."""
     errata, cleared = {}, {}
-    for t in workspace().shipped():
+    for t in workspace().papers():
         errata.update(t.errata)
         cleared.update(t.cleared)
     return errata, cleared

@@ -9,7 +9,7 @@ from quasicentral.engine.checker import decided
 from quasicentral.engine.dimensions import check_relation
 
 WS = shipped.workspace()
-ENTRIES = [e for t in WS.shipped() for e in t.entries.values()]
+ENTRIES = [e for t in WS.papers() for e in t.entries.values()]
 IDS = [e.id for e in ENTRIES]
 
 
@@ -57,7 +57,7 @@ def test_dimensions(eid):
 def test_every_entry_has_a_derivation():
     missing = [i for i in IDS if WS.derivation(i) is None]
     assert not missing
-    ours = {t.id for t in WS.shipped()}
+    ours = {t.id for t in WS.papers()}
     stray = [i for i in WS.derivations.by_id if i.split(":")[0] in ours and i not in set(IDS)]
     assert not stray, "derivations for ids the catalog does not have"
 

@@ -26,8 +26,8 @@ def test_recall_and_false_alarms_on_the_catalog():
     no integral (each mutant of an integral costs seconds of quadrature) — a sample that keeps the
     default run short; every mutant of every entry runs as `quasicentral mutate` and in the slow
     test below."""
-    ids = [i for i in mutate.verified_entries(WS, WS.shipped()) if not shipped.entry(i).printed.has(sp.Integral)][::3]
-    res = mutate.run(WS, WS.shipped(), per_entry=2, ids=ids)
+    ids = [i for i in mutate.verified_entries(WS, WS.papers()) if not shipped.entry(i).printed.has(sp.Integral)][::3]
+    res = mutate.run(WS, WS.papers(), per_entry=2, ids=ids)
     assert res["entries"] > 40 and res["mutants"] > 70
     assert res["false_alarms"] == 0, res["false_alarm_entries"]
     assert res["recall"] == 1.0, res["undetected"]
@@ -38,7 +38,7 @@ def test_recall_on_every_mutant():
     """Every mutant (~5 min on 2 cores): 100 % recall, no false alarm; the swapped-variable
     mutants equivalent on the domain (ω ↔ κ in ω = √(Ω² − κ²), φ0 ↔ φ in (56), (59), (62)) are
     set aside as such, not counted."""
-    res = mutate.run(WS, WS.shipped())
+    res = mutate.run(WS, WS.papers())
     assert res["false_alarms"] == 0 and res["recall"] == 1.0, res["undetected"]
     swapped = {(r["entry"], r["operator"]) for r in res["equivalent_on_domain"]}
     assert {("brepta1953:omega-definition", "swapped variables"), ("pendulum:56", "swapped variables"),
@@ -48,6 +48,6 @@ def test_recall_on_every_mutant():
 def test_domain_equivalence_and_divergence():
     """The mutants that decided the last 0.43 %: ω ↔ κ is equivalent on κ, ω ≥ 0 (set aside);
     the factor 2 in (62) makes the series diverge (refuted with that reason)."""
-    res = mutate.run(WS, WS.shipped(), ids=["brepta1953:omega-definition", "pendulum:62"], jobs=1)
+    res = mutate.run(WS, WS.papers(), ids=["brepta1953:omega-definition", "pendulum:62"], jobs=1)
     assert res["recall"] == 1.0, res["undetected"]
     assert {r["entry"] for r in res["equivalent_on_domain"]} == {"brepta1953:omega-definition", "pendulum:62"}

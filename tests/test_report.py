@@ -40,7 +40,7 @@ from quasicentral.documents.latex import Notation, display_rows, escape, paper_l
 S = shipped.symbols("brepta1953")  # the printer speaks a text's notation: here Brepta's
 P = shipped.symbols("pendulum")
 WS = shipped.workspace()
-TEXTS = WS.shipped()
+TEXTS = WS.papers()
 
 REPO = Path(__file__).resolve().parents[1]
 GOLDEN = REPO / "reports"

@@ -57,6 +57,9 @@ POINTS = {
     "JacobiEpsilon": [(0.75, 0.625), (3.0, 0.875), (0.5 + 0.75j, 0.375 + 0.125j)],
     "JacobiZ": [(0.75, 0.625), (3.0, 0.875), (0.5 + 0.75j, 0.375 + 0.125j)],
     "EllipticNome": [(0.625,), (0.5 + 0.25j,), (0.96875,)],
+    "WeierstrassP": [(0.375, 1.0, 0.25 + 1.125j), (0.25 + 0.5j, 0.75, -0.25 + 1.0j)],
+    "WeierstrassZeta": [(0.375, 1.0, 0.25 + 1.125j), (0.25 + 0.5j, 0.75, -0.25 + 1.0j)],
+    "WeierstrassSigma": [(0.375, 1.0, 0.25 + 1.125j), (0.25 + 0.5j, 0.75, -0.25 + 1.0j)],
 }
 for _name in ("SN", "CN", "DN", "NS", "NC", "ND", "SC", "SD", "CS", "CD", "DS", "DC"):
     POINTS["Jacobi" + _name] = [(0.75, 0.625), (0.5 + 0.75j, 0.375 + 0.125j), (3.5, 0.875), (0.625, 1.5),
@@ -439,7 +442,10 @@ DERIVATIVE_POINTS = {
 DERIVATIVE_POINTS["CarlsonRF"] = [(1.0, 2.0, 3.0), (0.5 + 0.25j, 2.0, 0.75)]
 DERIVATIVE_POINTS["CarlsonRC"] = [(0.5, 0.25), (1j, 0.5 + 0.25j)]
 DERIVATIVE_CASES = [(name, args, i) for name, pts in DERIVATIVE_POINTS.items() for args in pts
-                    for i in range(len(args))]
+                    for i in range(len(args))
+                    # Weierstrass's functions: ζ′ = −℘ and σ′ = ζσ in z only (℘′ and the half-periods'
+                    # derivatives have no closed form in these functions)
+                    if not (name.startswith("Weierstrass") and (i > 0 or name == "WeierstrassP"))]
 #: derivatives that go through CarlsonR's quadrature: a few only (each costs ~0.5 s)
 SLOW = {"CarlsonRD", "CarlsonRJ", "BulirschCel", "BulirschEl2", "BulirschEl3"}
 
@@ -523,19 +529,36 @@ def test_flint_theta_is_scaled_by_pi_and_ours_is_not():
 
 
 def test_branch_of_k_prime_for_complex_modulus():
+    """DLMF 19.2.9: K′(k) = K(k′) for |ph k| ≤ π/2, K(k′) ∓ 2iK(k) for π/2 < ±ph k < π (E′ with
+    K − E): analytic across the imaginary axis, not even in k."""
     with mpmath.workdps(30):
-        for k in (mpmath.mpc(0.5, 0.25), mpmath.mpc(-0.5, 0.25), mpmath.mpc(0.25, -2), mpmath.mpc(2, 0.5)):
-            # only k′² = 1 − k² enters: either root of 1 − k² gives K(k′)
+        for k in (mpmath.mpc(0.5, 0.25), mpmath.mpc(0.25, -2), mpmath.mpc(2, 0.5)):
+            # right half-plane: only k′² = 1 − k² enters, either root of 1 − k² gives K(k′)
             kp = mpmath.sqrt(1 - k ** 2)
             assert mpmath.almosteq(S["EllipticKp"].mp(k), mpmath.ellipk(kp ** 2), 1e-27)
             assert mpmath.almosteq(S["EllipticKp"].mp(k), S["EllipticK"].mp(-kp), 1e-27)
+        for k, sign in ((mpmath.mpc(-0.5, 0.25), -1), (mpmath.mpc(-0.625, -1.25), 1)):
+            K, E = S["EllipticK"].mp(k), S["EllipticE"].mp(k)
+            assert mpmath.almosteq(S["EllipticKp"].mp(k), mpmath.ellipk(1 - k ** 2) + sign * 2j * K, 1e-27)
+            assert mpmath.almosteq(S["EllipticEp"].mp(k), mpmath.ellipe(1 - k ** 2) + sign * 2j * (K - E), 1e-27)
+            # Legendre's relation 19.7.1 holds on the continuation
+            Kp, Ep = S["EllipticKp"].mp(k), S["EllipticEp"].mp(k)
+            assert mpmath.almosteq(E * Kp + Ep * K - K * Kp, mpmath.pi / 2, 1e-27)
         # k imaginary: k′ > 1 lies on K's cut, where the value is mpmath's ellipk(1 − k²)
         k = mpmath.mpc(0, 0.75)
         assert mpmath.almosteq(S["EllipticKp"].mp(k), mpmath.ellipk(1 - k ** 2), 1e-27)
-        # K′ is even in k; across the imaginary axis (its cut) it jumps
+        # continuous across the imaginary axis; not even in k
+        for f in (S["EllipticKp"], S["EllipticEp"]):
+            assert mpmath.almosteq(f.mp(mpmath.mpc(1e-20, 0.75)), f.mp(mpmath.mpc(-1e-20, 0.75)), 1e-15)
         k = mpmath.mpc(0.25, 0.75)
-        assert mpmath.almosteq(S["EllipticKp"].mp(k), S["EllipticKp"].mp(-k), 1e-27)
-        assert not mpmath.almosteq(S["EllipticKp"].mp(mpmath.mpc(1e-20, 0.75)), S["EllipticKp"].mp(mpmath.mpc(-1e-20, 0.75)), 1e-3)
+        assert not mpmath.almosteq(S["EllipticKp"].mp(k), S["EllipticKp"].mp(-k), 1e-3)
+        # the ball route takes the same branch
+        flint.ctx.prec, before = 120, flint.ctx.prec
+        try:
+            ball = S["EllipticKp"].ball(flint.acb(-0.5, 0.25))
+        finally:
+            flint.ctx.prec = before
+        assert abs(ball_mid(ball) - S["EllipticKp"].mp(mpmath.mpc(-0.5, 0.25))) < 1e-25
         # near k = 0 K′ ≈ ln(4/k) without the cancellation of K(√(1 − k²))
         k = mpmath.mpf(2) ** -80
         assert mpmath.almosteq(S["EllipticKp"].mp(k), mpmath.log(4 / k) + k ** 2 / 4 * (mpmath.log(4 / k) - 1), 1e-25)

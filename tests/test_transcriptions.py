@@ -16,7 +16,7 @@ import pytest
 from quasicentral.engine import latexparse
 
 UNREAD = tomllib.loads((Path(__file__).parent / "data" / "latex-unread.toml").read_text(encoding="utf-8"))["unread"]
-IDS = [e.id for t in shipped.workspace().shipped() for e in t.entries.values()]
+IDS = [e.id for t in shipped.workspace().papers() for e in t.entries.values()]
 
 
 def _reads(entry) -> bool:

@@ -21,7 +21,7 @@ from quasicentral.notation import bridge
 from quasicentral.notation.domain import Domain, substitute_definitions
 
 ERRATA, CLEARED = shipped.records()
-CAUSES = {cid: c for t in shipped.workspace().shipped() for cid, c in t.causes.items()}
+CAUSES = {cid: c for t in shipped.workspace().papers() for cid, c in t.causes.items()}
 BREPTA = shipped.text("brepta1953").records
 WS = shipped.workspace()
 ZETA = ["B-integral-zeta", "B-integral-denominator", "B-split", "B-split-limits", "B-reduced", "B-final",
@@ -31,7 +31,7 @@ BRANCH = ["pendulum:51", "pendulum:51-repeated", "pendulum:separated-velocity", 
 
 # --- 1. root causes -------------------------------------------------------------------------
 def test_every_erratum_names_known_causes_of_its_text():
-    for t in WS.shipped():
+    for t in WS.papers():
         for rec in t.errata.values():
             assert rec.causes
             for c in rec.causes:

@@ -11,7 +11,7 @@ from quasicentral.notation.domain import substitute_definitions
 from quasicentral.engine.verdict import Method, Refuted, Verified
 from shipped import derived
 
-IDS = [e.id for t in shipped.workspace().shipped() for e in t.entries.values()]
+IDS = [e.id for t in shipped.workspace().papers() for e in t.entries.values()]
 ERRATA, CLEARED = shipped.records()
 
 

@@ -44,6 +44,8 @@ class Entry:
     kind: str = ""  # identity | definition | inequality | series | asymptotic | notation ("" = not said)
     semantic: str = ""  # the semantic LaTeX the entry was read from, if any
     approx: str = ""  # a printed rounding of the entry's value ("4.965114")
+    rests_on: tuple[str, ...] = ()  # ids of the entries whose definitions hold here too
+    defines_names: tuple[str, ...] = ()  # symbols the entry introduces (a definition: notation)
     path: str = ""  # the catalog file's full path, for messages
 
     @cached_property
@@ -51,6 +53,17 @@ class Entry:
         """The stated constraints, parsed (sympy relations)."""
         return tuple(parse_transcription(c, self.symbols, f"{self._where(c)}: {self.id}: constraints")
                      for c in self.constraints_text)
+
+    @cached_property
+    def defines(self) -> tuple:
+        """The symbols the entry introduces: said (``defines``), or an equation of a
+        ``kind = "definition"`` entry with a bare symbol on its left that its right does not hold."""
+        out = [symbol_named(self.symbols, n) for n in self.defines_names]
+        if self.kind == "definition":
+            for rel in self.relations():
+                if isinstance(rel, sp.Eq) and isinstance(rel.lhs, sp.Symbol) and rel.lhs not in rel.rhs.free_symbols:
+                    out.append(rel.lhs)
+        return tuple(dict.fromkeys(out))
 
     @cached_property
     def real(self) -> tuple:
@@ -83,6 +96,17 @@ class Entry:
     def relations(self) -> list[sp.Basic]:
         p = self.printed
         return list(p) if isinstance(p, (sp.Tuple, list, tuple)) else [p]
+
+
+def locate_key(entry: Entry, key: str) -> str:
+    """``file:line`` of ``key`` in ``entry``'s table of its catalog file."""
+    path = Path(entry.path)
+    try:
+        data = read_toml(path)
+        i = next(i for i, raw in enumerate(data.get("equation", [])) if raw.get("id") == entry.id)
+    except (CatalogError, StopIteration):
+        return entry.path or entry.file
+    return locate(path, "equation", i, key)
 
 
 def symbol_named(table: SymbolTable, name: str) -> sp.Basic:
@@ -227,7 +251,7 @@ def _deep_line(text: str, depth_limit: int = 64) -> int:
 
 _REQUIRED = ("id", "name", "latex", "printed")
 _KNOWN = set(_REQUIRED) | {"number", "dims", "note", "constraints", "real", "url", "kind", "semantic", "approx",
-                           "rests_on"}
+                           "rests_on", "defines"}
 KINDS = ("identity", "definition", "inequality", "series", "asymptotic", "notation")
 
 
@@ -281,15 +305,18 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
     if not isinstance(dims, dict) or not all(isinstance(v, str) for v in dims.values()):
         raise CatalogError(f"{here}: {eid}: dims is a table such as {{ A = \"L^2/T\" }}")
     constraints, real = _strings(raw, "constraints", f"{here}: {eid}"), _strings(raw, "real", f"{here}: {eid}")
+    rests_on = _strings(raw, "rests_on", f"{here}: {eid}")
+    defines = _strings(raw, "defines", f"{here}: {eid}")
     try:
         for text in dims.values():
             parse_dim(text)
         table.check_names(raw["printed"])
         for c in constraints:
             table.check_names(c)
-        for name in real:
-            if name not in table:
-                raise SymbolError(f"real: {name} is not a declared symbol")
+        for key, names in (("real", real), ("defines", defines)):
+            for name in names:
+                if name not in table:
+                    raise SymbolError(f"{key}: {name} is not a declared symbol")
     except (SymbolError, UnitError) as exc:
         raise CatalogError(f"{transcription_line(path, i, exc)}: {eid}: {exc}") from None
     return Entry(
@@ -299,7 +326,8 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
         dims_text=tuple(sorted((str(a), str(b)) for a, b in dims.items())),
         note=raw.get("note", "").strip(), file=path.name, order=order, symbols=table,
         constraints_text=constraints, real_names=real, url=raw.get("url", "").strip(), kind=raw.get("kind", ""),
-        semantic=raw.get("semantic", "").strip(), approx=raw.get("approx", "").strip(), path=str(path))
+        semantic=raw.get("semantic", "").strip(), approx=raw.get("approx", "").strip(), rests_on=rests_on,
+        defines_names=defines, path=str(path))
 
 
 def transcription_line(path: Path, i: int, exc: Exception, table: str = "equation", key: str = "printed") -> str:

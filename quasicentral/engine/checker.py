@@ -28,13 +28,14 @@ from dataclasses import replace
 
 import sympy as sp
 
+from quasicentral.engine import asymptotic
 from quasicentral.engine.claims import CannotCompare, Claim, claims_for, decided  # noqa: F401 - re-exported
 from quasicentral.engine.dimensions import check_relation
 from quasicentral.engine.ladder import numeric
 from quasicentral.engine.options import Options
 from quasicentral.engine.proofs import prove_zero
 from quasicentral.engine.reasons import Code, Reason
-from quasicentral.engine.registry import Derivation
+from quasicentral.engine.registry import Derivation, Mode
 from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, Verified, combine
 from quasicentral.notation.domain import substitute_definitions
 from quasicentral.notation.symbols import SymbolTable
@@ -51,7 +52,9 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
           table: SymbolTable, result=None, failed: str | None = None) -> Verdict:
     """The verdict on ``printed`` against ``derivation``'s ``result`` (see the module
     docstring); ``failed`` is the error of a derivation that could not be computed."""
-    findings = tuple(c for c in (check_relation(rel, dims) for rel in printed) if c.inconsistent or c.undetermined)
+    # a text that declares no dimension at all (mathematics: a formula collection) has none to check
+    findings = tuple(c for c in (check_relation(rel, dims) for rel in printed) if c.inconsistent or c.undetermined) \
+        if dims else ()
     inconsistent = tuple(c for c in findings if c.inconsistent)
     if inconsistent and not opts.numbers_after_dimensions:
         return Refuted(Method.DIMENSIONAL, Reason.of(Code.DIMENSIONAL, numbers=None), dimensions=findings)
@@ -64,6 +67,11 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
 
     if failed is not None:
         return unsettled(Reason.of(Code.DERIVATION_FAILED, error=failed))
+    if derivation.mode is Mode.IDENTITY and asymptotic.passage_relation(printed):
+        try:
+            return replace(asymptotic.check(printed, derivation.domain, label, opts, table), dimensions=findings)
+        except Exception as exc:  # noqa: BLE001 - a failure of the passage is this entry's
+            return unsettled(Reason.of(Code.STAGE_FAILED, stage="evaluation", error=_error(exc)))
     try:
         with time_limit(opts.symbolic_seconds) as limit:
             claims = claims_for(printed, derivation, result)
@@ -102,8 +110,11 @@ def _claim_verdict(claim: Claim, derivation: Derivation, label: str, opts: Optio
         return Inconclusive(Method.NONE, Reason.of(Code.STAGE_FAILED, stage="evaluation", error=_error(exc)))
     if not opts.symbolic or isinstance(v, Refuted):
         return v
+    if claim.at_most:
+        return v  # an inequality: the numbers decide
+    seconds = opts.identity_symbolic_seconds if derivation.mode is Mode.IDENTITY else opts.symbolic_seconds
     try:
-        proved = prove_zero(substitute_definitions(claim.printed - claim.derived, defs), opts.symbolic_seconds)
+        proved = prove_zero(substitute_definitions(claim.printed - claim.derived, defs), seconds)
     except Exception:  # noqa: BLE001 - a failed proof proves nothing
         proved = False
     if not proved:

@@ -20,10 +20,18 @@ from quasicentral.engine.registry import Mode, as_list
 
 @dataclass(frozen=True)
 class Claim:
+    """Two expressions that should be equal on the domain — or, ``at_most``, a printed side
+    that should not exceed the other (an inequality, checked one-sidedly on real values)."""
+
     printed: sp.Expr
     derived: sp.Expr
     quantity: Reason  # what the two values are (a Q_… reason)
     scale: sp.Expr | None = None  # magnitude the difference is measured against
+    at_most: bool = False  # printed ≤ derived is claimed, not printed = derived
+
+
+#: the inequalities, each as (is "left ≤ right" rather than "left ≥ right")
+INEQUALITIES = {sp.StrictLessThan: True, sp.LessThan: True, sp.StrictGreaterThan: False, sp.GreaterThan: False}
 
 
 class CannotCompare(Exception):
@@ -78,6 +86,8 @@ def claims_for(printed: list[sp.Basic], derivation, result) -> list[Claim]:
     """Pair the printed relations with the derivation's result; :class:`CannotCompare` says
     why they cannot be."""
     mode = derivation.mode
+    if mode is Mode.IDENTITY:
+        return identity_claims(printed, derivation.unknowns or ())
     printed = [decided(rel) for rel in printed]
     if mode is Mode.CONDITION:
         return _condition_claims(printed, result)
@@ -96,6 +106,33 @@ def claims_for(printed: list[sp.Basic], derivation, result) -> list[Claim]:
     if mode is Mode.EXPRESSION:
         return [Claim(p, d, Reason(Code.Q_VALUE)) for p, d in zip(printed, derived)]
     return _solved_claims(printed, derived, unknowns or tuple(d.lhs for d in derived))
+
+
+def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
+    """The printed relations as they stand: each equation's two sides (a chain is a list of
+    equations), each inequality as its lesser side at most its greater.  Derivatives sympy can
+    carry out are carried out; the rest is left to the numbers.  A relation that holds a symbol
+    the entry introduces (``defines``) is its definition: notation, nothing to check."""
+    out = []
+    for rel in printed:
+        introduced = sorted((set(defines) & rel.free_symbols) if isinstance(rel, sp.Basic) else (), key=str)
+        if introduced:
+            raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(str(s) for s in introduced)))
+        if isinstance(rel, sp.Eq):
+            out.append(Claim(doit_derivatives(rel.lhs), doit_derivatives(rel.rhs), Reason(Code.Q_SIDES)))
+        elif type(rel) in INEQUALITIES:
+            low, high = (rel.lhs, rel.rhs) if INEQUALITIES[type(rel)] else (rel.rhs, rel.lhs)
+            out.append(Claim(doit_derivatives(low), doit_derivatives(high), Reason(Code.Q_LESSER_GREATER),
+                             at_most=True))
+        elif rel in (sp.true, sp.false):
+            _truth(rel)
+        elif isinstance(rel, sp.Ne):
+            raise CannotCompare(Reason(Code.NOT_EQUAL_ONLY))
+        else:
+            raise CannotCompare(Reason(Code.NOTATION_ONLY))
+    if not out:
+        raise CannotCompare(Reason(Code.NOTHING_TO_CHECK))
+    return out
 
 
 def _condition_claims(printed: list, result) -> list[Claim]:

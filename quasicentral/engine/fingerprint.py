@@ -94,29 +94,50 @@ def folder_fingerprint(tid: str, root: Path) -> str:
     return h.hexdigest()
 
 
-def _text_id(root: Path) -> str | None:
+def _text_head(root: Path) -> tuple[str, str] | None:
+    """(id, check) of the folder's ``text.toml``, or None where it is not a text's file (the full
+    reader says why)."""
     path = root / TEXT_FILE
     try:
-        if not path.is_file() or path.stat().st_size > 4 * 2**20:  # not a text's file: the full reader says why
+        if not path.is_file() or path.stat().st_size > 4 * 2**20:
             return None
         with open(path, "rb") as f:
-            tid = tomllib.load(f).get("id")
+            data = tomllib.load(f)
     except (OSError, ValueError, RecursionError, tomllib.TOMLDecodeError):
         return None
-    return tid if isinstance(tid, str) else None
+    tid, check = data.get("id"), data.get("check", "derivation")
+    return (tid, check) if isinstance(tid, str) and isinstance(check, str) else None
+
+
+def _text_id(root: Path) -> str | None:
+    head = _text_head(root)
+    return head[0] if head else None
+
+
+def shipped_folders(collections: bool = True) -> list[Path]:
+    """The folders of the texts shipped with the package; ``collections=False`` leaves out the
+    formula collections (``check = "identity"``: DLMF's chapters), which a command works on
+    only when they are named — with no ``--text``, a command works on the shipped papers."""
+    out = []
+    for toml in sorted(SHIPPED_ROOT.glob(f"*/{TEXT_FILE}")):
+        head = _text_head(toml.parent)
+        if collections or head is None or head[1] != "identity":
+            out.append(toml.parent)
+    return out
 
 
 def text_folders(specs: list[str] | None) -> list[tuple[str, Path]] | None:
     """(id, folder) of each text ``specs`` names — folders, or shipped ids; none named: the
-    shipped texts — or ``None`` where a name does not resolve plainly."""
+    shipped papers — or ``None`` where a name does not resolve plainly."""
     shipped = {}
-    for toml in sorted(SHIPPED_ROOT.glob(f"*/{TEXT_FILE}")):
-        tid = _text_id(toml.parent)
+    for folder in shipped_folders():
+        tid = _text_id(folder)
         if tid is None:
             return None
-        shipped[tid] = toml.parent.resolve()
+        shipped[tid] = folder.resolve()
     if not specs:
-        return sorted(shipped.items())
+        papers = {folder.resolve() for folder in shipped_folders(collections=False)}
+        return sorted((tid, root) for tid, root in shipped.items() if root in papers)
     out: list[tuple[str, Path]] = []
     for spec in specs:
         path = Path(spec).expanduser()

@@ -19,6 +19,7 @@ from functools import lru_cache
 
 import mpmath
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from quasicentral.engine.claims import Claim
 from quasicentral.engine.options import Options
@@ -102,8 +103,8 @@ class _Evaluator:
     """The claim's sides compiled once; values at a point on a rung (derived values remembered
     per expression, exact point and digits: an erratum's printed and corrected forms share them)."""
 
-    def __init__(self, p, d, scale, args):
-        self.p, self.d, self.args = p, d, args
+    def __init__(self, p, d, scale, args, at_most: bool = False):
+        self.p, self.d, self.args, self.at_most = p, d, args, at_most
         self.fp = bridge.rung_function(p, args)
         self.fs = bridge.rung_function(scale, args) if scale is not None else None
         self.d_args = tuple(sorted(d.free_symbols, key=str))
@@ -117,7 +118,7 @@ class _Evaluator:
             mag = max(abs(pv), abs(dv))
             if self.fs is not None:
                 mag = max(mag, abs(+self.fs(*vals)))
-            diff = abs(pv - dv)
+            diff = abs(pv - dv) if not self.at_most else _excess(pv, dv, mag, dps)
             if not (mpmath.isfinite(diff) and mpmath.isfinite(mag)):
                 raise ValueError("not finite")
         return Rung(pv, dv, diff, mag)
@@ -133,6 +134,15 @@ class _Evaluator:
             except EVALUATION_ERRORS:
                 t = None
         return Rung(r.printed, r.derived, r.diff, r.magnitude, t)
+
+
+def _excess(low, high, magnitude, dps: int):
+    """How far the side printed lesser exceeds the greater (0 where the inequality holds); a
+    point where either side is not real is not in an inequality's domain (ValueError)."""
+    negligible = tolerance(1.0, dps) * (magnitude or 1)
+    if abs(mpmath.im(low)) > negligible or abs(mpmath.im(high)) > negligible:
+        raise ValueError("a side of the inequality is not real here")
+    return max(mpmath.re(low) - mpmath.re(high), mpmath.mpf(0))
 
 
 @lru_cache(maxsize=50_000)
@@ -223,6 +233,9 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     inconclusive with the reason."""
     defs = domain.definition_map(table)
     p, d, scale = prepared(claim.printed, defs), prepared(claim.derived, defs), prepared(claim.scale, defs)
+    unknown = sorted({f.func.__name__ for e in (p, d) for f in e.atoms(AppliedUndef)})
+    if unknown:  # a function the text names but does not define (a sequence a(n)): no numbers
+        return Inconclusive(Method.NONE, Reason.of(Code.NO_NUMERIC_FORM, function=unknown[0]))
     syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
     try:
         integral = p.has(sp.Integral) or d.has(sp.Integral)
@@ -233,7 +246,7 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     if len(pts) < max(3, count // 2):
         return Inconclusive(Method.NONE, Reason(Code.TOO_FEW_POINTS))
     args = tuple(sorted(syms, key=str))
-    ev = _Evaluator(p, d, scale, args)
+    ev = _Evaluator(p, d, scale, args, claim.at_most)
     # an endpoint where the printed integrand is not integrable is seen in a few evaluations,
     # where its quadratures would cost seconds and return noise
     early_divergence = _divergence(p, pts, claim, opts, before_numbers=True)
@@ -279,15 +292,18 @@ def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
     if disagree:
         rel, pt, row = max(disagree, key=lambda r: r[0])
         witness = witness_at(claim.quantity, p, d, pt, (row[-1].printed, row[-1].derived),
-                             (row[0].printed, row[0].derived), ladder[-1], opts, rel)
+                             (row[0].printed, row[0].derived), ladder[-1], opts, rel, claim.at_most)
         method = Method.CERTIFIED if witness.certified else Method.NUMERIC
-        return Refuted(method, Reason.of(Code.DISAGREES, count=len(disagree), points=n, relative=rel), n, ladder,
-                       witness=witness)
+        reason = Reason.of(Code.FAILS_AT, count=len(disagree), points=n) if claim.at_most else \
+            Reason.of(Code.DISAGREES, count=len(disagree), points=n, relative=rel)
+        return Refuted(method, reason, n, ladder, witness=witness)
     if unstable:
         return _divergence(p, pts, claim, opts, False) or Inconclusive(
             Method.NUMERIC, Reason.of(Code.UNSTABLE, n=unstable, of=n), n, ladder)
     vacuous = all(r[-1].magnitude == 0 for _, r in rows)
     confirmed = sum(len(r) == len(ladder) for _, r in rows)
+    if claim.at_most:
+        return Verified(Method.NUMERIC, Reason.of(Code.HOLDS, n=n, of=len(pts), top=ladder[-1]), n, ladder)
     return Verified(Method.NUMERIC, Reason.of(Code.AGREES, n=n, of=len(pts),
                                               digits=math.floor(opts.agreement_exponent * ladder[0]),
                                               confirmed=confirmed, top=ladder[-1], vacuous=vacuous), n, ladder)

@@ -2,8 +2,10 @@
 and count how many the checker catches.
 
 Operators, each at one place of the relation: sign flip of a term, changed exponent (×2,
-÷2, +1), a factor 2, k ↔ k² (one occurrence of a symbol s → s²), dropped parentheses
-(a(b + c) → ab + c); and over the whole relation: two symbols swapped, an independent
+÷2, +1), a factor 2, k ↔ k² (one occurrence of a symbol s → s²; a function's argument m = k²
+written as k), dropped parentheses (a(b + c) → ab + c), two arguments of a function swapped,
+the branch of a root (√(ab) ↔ √a·√b, which differ off the positive reals); and over the whole
+relation: two symbols swapped, an independent
 variable slipped for another declared quantity of the same dimension (t for a period T).  A
 mutant that sympy shows equal to the original is *equivalent* and not counted.  A mutant the
 fast checker does not refute may still be equivalent *on the declared domain*
@@ -115,6 +117,25 @@ def mutations(rel: sp.Basic, table: SymbolTable):
                 yield "dropped parentheses", sp.sstr(node), at(rest * inner.args[0] + sp.Add(*inner.args[1:]))
         if isinstance(node, sp.Symbol) and node not in variables and node not in _bound(rel):
             yield "k <-> k^2", sp.sstr(node), at(node**2)
+        if _applied(node) and len(node.args) >= 2 and node.args[0] != node.args[1]:
+            swapped = (node.args[1], node.args[0]) + tuple(node.args[2:])
+            yield "swapped arguments", sp.sstr(node), at(node.func(*swapped))
+        if _applied(node) and any(isinstance(a, sp.Pow) and a.exp == 2 for a in node.args):
+            # a parameter m = k² written where the modulus k belongs (or the converse, above)
+            i = next(i for i, a in enumerate(node.args) if isinstance(a, sp.Pow) and a.exp == 2)
+            args = list(node.args)
+            args[i] = args[i].base
+            yield "parameter for modulus", sp.sstr(node), at(node.func(*args))
+        if isinstance(node, sp.Pow) and node.exp in (sp.S.Half, -sp.S.Half) and isinstance(node.base, sp.Mul):
+            # √(ab) for √a·√b: the same on the positive reals, another branch in the complex plane
+            factors = node.base.args
+            yield "branch of the root", sp.sstr(node), at(sp.Mul(*[sp.Pow(f, node.exp) for f in factors],
+                                                               evaluate=False))
+        if isinstance(node, sp.Mul):
+            roots = [f for f in node.args if isinstance(f, sp.Pow) and f.exp == sp.S.Half]
+            if len(roots) >= 2:
+                rest = [f for f in node.args if f not in roots[:2]]
+                yield "branch of the root", sp.sstr(node), at(sp.Mul(*rest, sp.sqrt(roots[0].base * roots[1].base)))
     free = sorted((a for a in rel.free_symbols if a not in variables and isinstance(a, sp.Symbol) and a not in _bound(rel)),
                   key=str)
     for a, b in zip(free, free[1:]):
@@ -125,6 +146,11 @@ def mutations(rel: sp.Basic, table: SymbolTable):
                  and o not in table.definitions]
         for other in sorted(alike, key=str)[:1]:
             yield "variable slip", f"{var} -> {other}", _replace_variable(rel, var, other)
+
+
+def _applied(node) -> bool:
+    """An application of a named function (sympy's or the notation's), not an operator."""
+    return isinstance(node, sp.Function) and not isinstance(node, sp.core.function.AppliedUndef)
 
 
 def _valid(gen):

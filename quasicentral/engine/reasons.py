@@ -33,9 +33,13 @@ class Code(str, Enum):
     ROUNDS_TO = "rounds-to"  # value, digits: an exact value that rounds to the printed digits
     HOLDS = "holds"  # n, of, top: an inequality that holds at every point
     LIMIT_FOUND = "limit-found"  # how ("sympy" | "sequence"), value: a limit that agrees
+    ORDER_HOLDS = "order-holds"  # n, variable, point, steps: an O-term bounded along the passage
+    BLOWS_UP = "blows-up"  # n, variable, point: a limit that is infinite, as printed
     # --- refuted -------------------------------------------------------------------------------
     DISAGREES = "disagrees"  # count, points, relative
     FAILS_AT = "fails-at"  # count, points: an inequality that fails at certified points
+    ORDER_GROWS = "order-grows"  # variable, point, rate: |lhs − rhs|/|O-term| grows along the passage
+    STAYS_BOUNDED = "stays-bounded"  # variable, point: a limit printed infinite that stays bounded
     DIVERGES = "diverges"  # why: INTEGRAND_GROWS | TERMS_GROW
     INTEGRAND_GROWS = "integrand-grows"  # variable, end, order
     TERMS_GROW = "terms-grow"  # variable, ratio100, ratio200
@@ -66,6 +70,8 @@ class Code(str, Enum):
     ASYMPTOTIC_WITHOUT_LIMIT = "asymptotic-without-limit"
     NOTATION_ONLY = "notation-only"
     LIMIT_UNDECIDED = "limit-undecided"  # variable, point
+    DEFINES = "defines"  # symbols: a definition of what the entry introduces (notation)
+    NOT_EQUAL_ONLY = "not-equal-only"  # a printed a ≠ b: true almost everywhere, nothing to check
     # --- dimensions (the finding on one relation) -------------------------------------------
     DIM_ADDS = "dim-adds"  # first, other, sum, term
     DIM_EXPONENT = "dim-exponent"  # power
@@ -92,6 +98,9 @@ class Code(str, Enum):
     Q_PRINTED_RESIDUAL = "q-printed-residual"  # unknown
     Q_UNKNOWN = "q-unknown"  # unknown: the value of the unknown, printed and derived
     Q_DIMENSIONS = "q-dimensions"
+    Q_SIDES = "q-sides"  # the left and the right side of a printed equation
+    Q_ORDER_RATIO = "q-order-ratio"  # variable, point: |lhs − rhs|/|O-term| at the last and an earlier step
+    Q_LESSER_GREATER = "q-lesser-greater"  # the side printed lesser and the side printed greater
 
 
 Value = "int | float | str | bool | None | Reason | tuple"

@@ -16,6 +16,10 @@ results.  The modes:
 * ``mode="condition"`` — the printed entry is a condition (``Eq(symbol, value)``); the function
   returns a quantity that must vanish under it (e.g. the torque that a "no drag" condition
   must remove).
+* ``mode="identity"`` — the printed relations are checked as they stand, on the entry's
+  constraints (an equation side against side, an inequality one-sidedly, an O-term along its
+  passage): what a formula collection's entries need no derivation for
+  (:mod:`quasicentral.engine.identity`); the function's result is not used.
 
 A derivation calls :func:`derived` for the results it builds on; each call is recorded, so
 what a derivation uses is known (``uses=`` may still be declared: it is then checked against
@@ -48,6 +52,7 @@ class Mode(str, Enum):
     SUBSTITUTE = "substitute"
     EXPRESSION = "expression"
     CONDITION = "condition"
+    IDENTITY = "identity"
 
 
 class RegistryError(ValueError):

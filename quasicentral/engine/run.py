@@ -55,7 +55,8 @@ def derivation_of(ws, entry: catalog.Entry):
     entry has none — the entry's own relation checked as it stands."""
     der = ws.derivation(entry.id)
     if der is None and ws.text(entry.source).check == "identity":
-        der = identity_derivation(entry)
+        text = ws.text(entry.source)
+        der = identity_derivation(entry, tuple(text.entries[i] for i in entry.rests_on if i in text.entries))
     return der
 
 

@@ -33,7 +33,7 @@ from functools import cached_property
 from pathlib import Path
 
 from quasicentral.engine import errata as errata_mod
-from quasicentral.engine.catalog import CatalogError, Entry, load_file, read_bytes, read_toml, where
+from quasicentral.engine.catalog import CatalogError, Entry, load_file, locate_key, read_bytes, read_toml, where
 from quasicentral.engine.fingerprint import SHIPPED_ROOT, TEXT_FILE, folder_fingerprint
 from quasicentral.engine.registry import Derivations, RegistryError, collect
 from quasicentral.notation.symbols import SymbolError, SymbolTable, table_from_toml
@@ -146,6 +146,10 @@ class Text:
         named (file and line) before any work begins."""
         for e in self.entries.values():
             e.validate()
+            unknown = [r for r in e.rests_on if r not in self.entries]
+            if unknown:
+                raise TextError(f"{locate_key(e, 'rests_on')}: {e.id}: rests_on names {unknown[0]!r}, "
+                                "which is not an entry of this text")
         for rec in self.errata.values():
             rec.corrected
 
@@ -320,8 +324,3 @@ def open_text(folder: str | Path) -> Text:
                 symbols=table_of(root, data), year=year, title_en=str(data.get("title_en", "")).strip(),
                 citation=str(data.get("citation", "")).strip(),
                 derivation_names=tuple(names) if names is not None else None, check=check)
-
-
-def shipped_folders() -> list[Path]:
-    """The folders of the texts shipped with the package."""
-    return sorted(p.parent for p in SHIPPED_ROOT.glob(f"*/{TEXT_FILE}"))

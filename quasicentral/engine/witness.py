@@ -19,10 +19,12 @@ from quasicentral.engine.verdict import Witness
 from quasicentral.notation import bridge
 
 
-def witness_at(quantity, p, d, pt, top, low, dps, opts: Options, rel) -> Witness:
+def witness_at(quantity, p, d, pt, top, low, dps, opts: Options, rel, at_most: bool = False) -> Witness:
     """The witness at ``pt``: both values with only guaranteed digits (see :func:`witness_values`);
-    ``top`` and ``low`` are the (printed, derived) values on the ladder's top and first rungs."""
-    vals = witness_values(p, d, pt, top, low, dps, opts)
+    ``top`` and ``low`` are the (printed, derived) values on the ladder's top and first rungs;
+    ``at_most``: an inequality's two sides (certified where the lesser's ball lies above the
+    greater's)."""
+    vals = witness_values(p, d, pt, top, low, dps, opts, at_most=at_most)
     return Witness(
         parameters={str(s): sp.sstr(v) for s, v in sorted(pt.items(), key=lambda kv: str(kv[0]))},
         printed=vals.printed, corrected=vals.corrected, digits=min(vals.printed_digits, vals.corrected_digits),
@@ -49,7 +51,7 @@ class WitnessValues:
     certified: bool  # the ball of printed − corrected excludes 0
 
 
-def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) -> WitnessValues:
+def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS, at_most: bool = False) -> WitnessValues:
     """Both witness values, every digit shown guaranteed.
 
     With balls (python-flint, as ``good()`` does): start at the ladder's precision and double
@@ -92,7 +94,7 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
                 elif balls[i] is None:
                     balls[i] = False
             if all(b is not None and b is not False for b in balls):  # identity: acb(0) == False
-                certified = not (balls[0] - balls[1]).contains(0)
+                certified = _exceeds(balls[0], balls[1]) if at_most else not (balls[0] - balls[1]).contains(0)
             done = all(b is False or stalled[i] or (b is not None and _ball_digits(b, want) >= want)
                        for i, b in enumerate(balls))
             settled = done and (certified or any(b is False for b in balls))
@@ -121,6 +123,13 @@ def witness_values(p, d, pt, top, low, dps, opts, want: int = WITNESS_DIGITS) ->
     return WitnessValues(ps, cs, pn, cn, pc, cc, certified)
 
 
+def _exceeds(low, high) -> bool:
+    """The ball of the side printed lesser lies wholly above the greater's: both real, and their
+    difference positive."""
+    a, b = _real_part(low), _real_part(high)
+    return a is not None and b is not None and (a - b) > 0
+
+
 def _real_part(b):
     """The real ball of an acb whose imaginary part is 0 or negligible, else None.  A ball
     integral of a real integrand along a real path comes back with an imaginary part of
@@ -135,10 +144,17 @@ def _real_part(b):
 
 
 def _ball_digits(b, want: int) -> int:
-    """How many significant digits (≤ want) both ends of the real ball ``b`` round to alike."""
-    r = _real_part(b) if b is not None and b is not False else None
-    if r is None:
+    """How many significant digits (≤ want) both ends of the ball ``b`` round to alike — of
+    each of its parts, where it is complex."""
+    if b is None or b is False:
         return 0
+    r = _real_part(b)
+    if r is None:
+        return min(_arb_digits(b.real, want), _arb_digits(b.imag, want))
+    return _arb_digits(r, want)
+
+
+def _arb_digits(r, want: int) -> int:
     if r.is_exact() and r == 0:
         return want
     mid, rad = _exact(r.mid()), _exact(r.rad())  # exact (lower()/upper() would round)
@@ -153,9 +169,24 @@ def _ball_digits(b, want: int) -> int:
 
 def _ball_str(b, n: int) -> str:
     r = _real_part(b)
+    if r is None:
+        return complex_string(_arb_str(b.real, n), _arb_str(b.imag, n))
+    return _arb_str(r, n)
+
+
+def _arb_str(r, n: int) -> str:
     if r.is_exact() and r == 0:
         return "0"
     return round_significant(_exact(r.mid()), n)
+
+
+def complex_string(re: str, im: str) -> str:
+    """A complex value from its two parts' decimal strings: ``1.25 - 0.5i`` (``0.5i`` where the
+    real part is 0)."""
+    if im in ("0", ""):
+        return re
+    sign, mag = ("-", im[1:]) if im.startswith("-") else ("+", im)
+    return f"{mag}i" if re == "0" and sign == "+" else f"-{mag}i" if re == "0" else f"{re} {sign} {mag}i"
 
 
 def _exact(x) -> Fraction:
@@ -200,10 +231,19 @@ def round_significant(x: Fraction, n: int) -> str:
 
 
 def _agreed(a, b, want: int) -> tuple[str, int]:
-    """The digits (≤ want) on which two evaluations of one value agree, from the more precise."""
-    a, b = _as_real(a), _as_real(b)
-    if a is None or b is None:
-        return "", 0
+    """The digits (≤ want) on which two evaluations of one value agree, from the more precise
+    (part by part, where it is complex)."""
+    ra, rb = _as_real(a), _as_real(b)
+    if ra is None or rb is None:
+        if a is None or b is None:
+            return "", 0
+        a, b = mpmath.mpc(a), mpmath.mpc(b)
+        (_, nr), (_, ni) = _agreed(a.real, b.real, want), _agreed(a.imag, b.imag, want)
+        n = min(nr, ni)
+        if n == 0:
+            return "", 0
+        return complex_string(_agreed_to(a.real, n), _agreed_to(a.imag, n)), n
+    a, b = ra, rb
     if a == 0 and b == 0:
         return "0", want
     fa, fb = _exact(a), _exact(b)
@@ -212,6 +252,10 @@ def _agreed(a, b, want: int) -> tuple[str, int]:
         if sa == round_significant(fb, n):
             return sa, n
     return "", 0
+
+
+def _agreed_to(v, n: int) -> str:
+    return "0" if v == 0 else round_significant(_exact(v), n)
 
 
 def _as_real(v):

@@ -288,6 +288,38 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "cs": lambda f, s: f"rozdíl stran vytištěného vztahu, kde {s.expr(f.unknown)} je odvozeno"},
     Code.Q_UNKNOWN: {"en": lambda f, s: s.expr(f.unknown), "cs": lambda f, s: s.expr(f.unknown)},
     Code.Q_DIMENSIONS: {"en": lambda f, s: "dimensions", "cs": lambda f, s: "rozměry"},
+    Code.ORDER_HOLDS: {
+        "en": lambda f, s: (f"|lhs − rhs| / |O-term| stays bounded as {s.expr(f.variable)} → {s.expr(f.point)} "
+                            f"({f.steps} steps, at {f.n} points)"),
+        "cs": lambda f, s: (f"|levá − pravá| / |člen O| zůstává omezený pro {s.expr(f.variable)} → {s.expr(f.point)} "
+                            f"({f.steps} kroků, v {f.n} bodech)")},
+    Code.ORDER_GROWS: {
+        "en": lambda f, s: (f"|lhs − rhs| / |O-term| grows as {s.expr(f.variable)} → {s.expr(f.point)} "
+                            f"(at least like the power {s.decimal(f.rate)} of the inverse distance)"),
+        "cs": lambda f, s: (f"|levá − pravá| / |člen O| roste pro {s.expr(f.variable)} → {s.expr(f.point)} "
+                            f"(nejméně jako mocnina {s.decimal(f.rate)} převrácené vzdálenosti)")},
+    Code.BLOWS_UP: {
+        "en": lambda f, s: f"grows without bound as {s.expr(f.variable)} → {s.expr(f.point)} (at {f.n} points)",
+        "cs": lambda f, s: f"roste nade všechny meze pro {s.expr(f.variable)} → {s.expr(f.point)} (v {f.n} bodech)"},
+    Code.STAYS_BOUNDED: {
+        "en": lambda f, s: f"stays bounded as {s.expr(f.variable)} → {s.expr(f.point)}, printed infinite",
+        "cs": lambda f, s: f"zůstává omezená pro {s.expr(f.variable)} → {s.expr(f.point)}, vytištěno nekonečno"},
+    Code.Q_ORDER_RATIO: {
+        "en": lambda f, s: f"|lhs − rhs| / |O-term| at the last and an earlier step of {s.expr(f.variable)} → "
+                           f"{s.expr(f.point)}",
+        "cs": lambda f, s: f"|levá − pravá| / |člen O| v posledním a dřívějším kroku {s.expr(f.variable)} → "
+                           f"{s.expr(f.point)}"},
+    Code.Q_SIDES: {"en": lambda f, s: "the left and the right side", "cs": lambda f, s: "levá a pravá strana"},
+    Code.Q_LESSER_GREATER: {"en": lambda f, s: "the side printed lesser and the side printed greater",
+                            "cs": lambda f, s: "strana vytištěná jako menší a strana vytištěná jako větší"},
+    Code.DEFINES: {
+        "en": lambda f, s: (f"defines {', '.join(s.expr(x) for x in f.symbols)}: notation, nothing to check "
+                            "(the entries that use it check it)"),
+        "cs": lambda f, s: (f"definuje {', '.join(s.expr(x) for x in f.symbols)}: označení, není co ověřovat "
+                            "(ověřují je záznamy, které je používají)")},
+    Code.NOT_EQUAL_ONLY: {
+        "en": lambda f, s: "a printed inequation a ≠ b: true almost everywhere, nothing to check",
+        "cs": lambda f, s: "vytištěná nerovnost a ≠ b: platí skoro všude, není co ověřovat"},
 }.items()})
 
 _STAGE_CS = MappingProxyType({"derivation": "odvození", "comparison": "srovnání", "compilation": "překlad",

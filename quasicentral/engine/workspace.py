@@ -8,6 +8,8 @@ a shipped text's id; their ``.py`` modules run only when their derivations are n
 
 >>> ws = Workspace()
 >>> [t.id for t in ws.shipped()]
+['brepta1953', 'dlmf-19', 'dlmf-22', 'pendulum']
+>>> [t.id for t in ws.papers()]   # what a command works on when no text is named
 ['brepta1953', 'pendulum']
 """
 
@@ -20,7 +22,8 @@ from pathlib import Path
 from quasicentral.engine import catalog
 from quasicentral.engine.registry import Derivation, Derivations
 from quasicentral.engine.store import DerivedStore
-from quasicentral.engine.texts import Text, TextError, open_text, shipped_folders
+from quasicentral.engine.fingerprint import shipped_folders
+from quasicentral.engine.texts import Text, TextError, open_text
 
 
 class Workspace:
@@ -57,10 +60,15 @@ class Workspace:
         """The texts shipped with the package, by id."""
         return sorted((self.open(p) for p in shipped_folders()), key=lambda t: t.id)
 
+    def papers(self) -> list[Text]:
+        """The shipped texts a command works on when none is named: all but the formula
+        collections (DLMF's chapters, ``check = "identity"``), which are named with ``--text``."""
+        return sorted((self.open(p) for p in shipped_folders(collections=False)), key=lambda t: t.id)
+
     def resolve(self, specs: list[str] | None) -> list[Text]:
-        """Texts named by folder or by a shipped text's id; none named: the shipped texts."""
+        """Texts named by folder or by a shipped text's id; none named: the shipped papers."""
         if not specs:
-            return self.shipped()
+            return self.papers()
         out: list[Text] = []
         for spec in specs:
             if not isinstance(spec, (str, Path)) or not str(spec).strip():

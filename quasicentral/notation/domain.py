@@ -124,9 +124,13 @@ def _draw(ranges: tuple, definitions: tuple, constraints: tuple, real: tuple, sy
     if missing:
         raise NoRange(missing[0])
     # endpoints and constraints with the definitions applied, once
-    spans = {sym: _Span(*(substitute_definitions(sp.sympify(e), defs) for e in ranges[sym]), real=sym in real)
-             for sym in order}
-    checks = [_Constraint(substitute_definitions(c, defs)) for c in constraints]
+    applied = [substitute_definitions(c, defs) for c in constraints]
+    spans = {}
+    for sym in order:
+        lo, hi = (substitute_definitions(sp.sympify(e), defs) for e in ranges[sym])
+        lo, hi, on_line = narrowed(sym, lo, hi, applied)
+        spans[sym] = _Span(lo, hi, real=sym in real or on_line, integer=bool(getattr(sym, "is_integer", False)))
+    checks = [_Constraint(c) for c in applied]
     points = []
     tries = 0
     while len(points) < count and tries < count * max_tries:
@@ -139,8 +143,44 @@ def _draw(ranges: tuple, definitions: tuple, constraints: tuple, real: tuple, sy
     return tuple(points)
 
 
+_BOUNDS = {sp.StrictGreaterThan: "lower", sp.GreaterThan: "lower", sp.StrictLessThan: "upper", sp.LessThan: "upper"}
+
+
+def narrowed(sym, lo, hi, constraints) -> tuple:
+    """``sym``'s range [lo, hi] narrowed by the constraints that bound it alone — ``x > 0``,
+    ``k ≤ 1``, ``Im z = 0``, ``Re z > 0`` — and whether they put it on the real line (an order
+    holds between real numbers only).  Only a sampling aid: every constraint is still tested
+    at every point, and a range the constraints leave empty is left as it was (the tests then
+    reject its points, and the check says so)."""
+    lo, hi = sp.sympify(lo), sp.sympify(hi)
+    if not (lo.is_number and hi.is_number) or any(e.has(sp.oo, -sp.oo, sp.zoo) for e in (lo, hi)):
+        return lo, hi, False
+    re_lo, re_hi, real = sp.re(lo), sp.re(hi), False
+    for c in constraints:
+        if isinstance(c, sp.Eq) and sp.im(sym) in (c.lhs, c.rhs) and 0 in (c.lhs, c.rhs):
+            real = True
+            continue
+        if type(c) not in _BOUNDS:
+            continue
+        side = _BOUNDS[type(c)]
+        for this, other, flip in ((c.lhs, c.rhs, False), (c.rhs, c.lhs, True)):
+            if not (other.is_number and other.is_real) or other.has(sp.oo, -sp.oo):
+                continue
+            bound = "upper" if (side == "lower") == flip else "lower"
+            if this == sym:
+                real = True
+            elif this != sp.re(sym):
+                continue
+            re_lo, re_hi = (sp.Max(re_lo, other), re_hi) if bound == "lower" else (re_lo, sp.Min(re_hi, other))
+    if not (re_lo < re_hi) is sp.true:
+        return lo, hi, False
+    return (re_lo + sp.I * sp.im(lo), re_hi + sp.I * sp.im(hi), real) if not real else (re_lo, re_hi, True)
+
+
 #: significant digits of a point drawn inside a range whose ends are irrational in earlier points
 DRAWN_DIGITS = 25
+#: the share of a complex box's draws made on its real segment
+REAL_SHARE = 1 / 3
 
 
 class _Span:
@@ -160,11 +200,19 @@ class _Span:
 
     An infinite end maps r to lo + r/(1 − r) (or hi − r/(1 − r); both infinite: (r − ½)/(r(1 − r))),
     exact rationals over the whole half-line.  Ends with imaginary parts make a box in the
-    complex plane (the corners lo and hi): a point draws its real and its imaginary part; a
-    symbol the domain holds ``real`` is drawn on the box's real segment."""
+    complex plane (the corners lo and hi): a point draws its real and its imaginary part — one
+    draw in :data:`REAL_SHARE` on the box's real segment, so that a formula that holds on the
+    real line only is told apart from one that holds in the plane, and a constraint that pins
+    a value to the real line (Im k² = 0) is met; a symbol the domain holds ``real`` is always
+    drawn on the real segment.  An integer symbol (``assumptions = ["integer"]``) is drawn
+    among the integers of its range."""
 
-    def __init__(self, lo: sp.Expr, hi: sp.Expr, real: bool = False):
+    def __init__(self, lo: sp.Expr, hi: sp.Expr, real: bool = False, integer: bool = False):
         self.ends = (lo, hi)
+        self.integer = None
+        if integer and lo.is_number and hi.is_number and sp.im(lo) == 0 and sp.im(hi) == 0 \
+                and not any(e in (sp.oo, -sp.oo) for e in (lo, hi)):
+            self.integer = (int(sp.ceiling(lo)), int(sp.floor(hi)))
         free = lo.free_symbols | hi.free_symbols
         self.infinite = tuple(e in (sp.oo, -sp.oo) for e in (lo, hi))
         self.box = None
@@ -193,10 +241,14 @@ class _Span:
         return (lo, hi) if ok else None
 
     def at(self, pt: dict, rng: random.Random) -> sp.Expr:
+        if self.integer is not None and self.integer[0] <= self.integer[1]:
+            return sp.Integer(rng.randint(*self.integer))
         r = Fraction(rng.randrange(1, 2**20), 2**20)
         if self.box is not None:
             re_lo, re_w, im_lo, im_w = self.box
-            im = im_lo + im_w * Fraction(rng.randrange(1, 2**20), 2**20) if im_w else im_lo
+            on_real_line = im_w and im_lo <= 0 <= im_lo + im_w and rng.random() < REAL_SHARE
+            im = Fraction(0) if on_real_line else im_lo + im_w * Fraction(rng.randrange(1, 2**20), 2**20) \
+                if im_w else im_lo
             re = re_lo + re_w * r
             return sp.Rational(re.numerator, re.denominator) + sp.I * sp.Rational(im.numerator, im.denominator)
         if any(self.infinite):

@@ -18,6 +18,7 @@ from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_m
                                          compile_path, flint_precision, mp_to_acb)
 from quasicentral.notation.integrals import infinite_end, prepare
 from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
+from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
 QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
 QUAD_PIECES_GAIN = 100  # ... and the least gain in its error estimate for which it cuts further
@@ -132,14 +133,28 @@ def close_infinite_sums(expr: sp.Basic) -> sp.Basic:
     return expr.replace(lambda e: isinstance(e, sp.Sum), _closed_sum) if expr.has(sp.Sum) else expr
 
 
+#: CPU seconds sympy may spend closing one infinite sum; past them it is summed numerically
+SUMMATION_SECONDS = 2.0
+
+
 @lru_cache(maxsize=1024)
 def _closed_sum(sm: sp.Sum) -> sp.Basic:
-    """One infinite sum's closed form (sympy's summation takes ~0.5 s: each is done once)."""
+    """One infinite sum's closed form (sympy's summation takes ~0.5 s: each is done once); a sum
+    sympy does not close within :data:`SUMMATION_SECONDS` is summed numerically
+    (:func:`_series`)."""
     if any(lim[2] in (sp.oo, -sp.oo) or lim[1] in (sp.oo, -sp.oo) for lim in sm.limits):
-        done = sm.doit()
+        try:
+            with time_limit(SUMMATION_SECONDS) as limit:
+                done = sm.doit()
+        except TimeLimitExceeded as exc:
+            if limit is None or not limit.owns(exc):
+                raise
+            return sm
+        except Exception:  # noqa: BLE001 - sympy's summation failing leaves the sum to the numbers
+            return sm
         # a Piecewise closed form whose "otherwise" branch keeps the Sum is fine: the
         # branch is evaluated only outside the region of convergence
-        return sm if isinstance(done, sp.Sum) else done
+        return sm if isinstance(done, sp.Sum) or done.has(sp.nan, sp.zoo) else done
     return sm
 
 
@@ -151,21 +166,169 @@ def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
     else mpmath's tanh–sinh)."""
     table = dict(MPMATH_NAMES)
     placeholders = {}
-    for integral in _outermost_integrals(expr):
-        name = f"quadrature{len(placeholders)}"
-        outer = tuple(sorted(integral.free_symbols, key=str))
-        table[name] = _quadrature(integral, outer)
-        placeholders[integral] = sp.Function(name)(*outer) if outer else sp.Function(name)(sp.Integer(0))
+    for form in _outermost_forms(expr):
+        name = f"form{len(placeholders)}"
+        outer = tuple(sorted(form.free_symbols, key=str))
+        table[name] = _quadrature(form, outer) if isinstance(form, sp.Integral) else _numeric_form(form, outer)
+        placeholders[form] = sp.Function(name)(*outer) if outer else sp.Function(name)(sp.Integer(0))
     return mp_lambdify(args, expr.xreplace(placeholders), modules=[table, "mpmath"])
 
 
-def _outermost_integrals(expr: sp.Basic) -> list[sp.Integral]:
+def _outermost_forms(expr: sp.Basic) -> list[sp.Basic]:
+    """The outermost parts of ``expr`` that lambdify cannot print as a call: definite integrals
+    (of one variable each: nested ones are integrals of integrals), sums and products, limits,
+    and derivatives sympy could not carry out (a function without a closed derivative)."""
     if isinstance(expr, sp.Integral):
         return [expr] if len(expr.limits) == 1 and len(expr.limits[0]) == 3 else []
+    if isinstance(expr, (sp.Sum, sp.Product, sp.Limit, sp.Derivative)):
+        return [expr]
     out: list = []
     for a in expr.args:
-        out += [i for i in _outermost_integrals(a) if i not in out]
+        out += [i for i in _outermost_forms(a) if i not in out]
     return out
+
+
+# --- sums, products, limits and derivatives by numbers ---------------------------------------
+#: terms a finite sum or product adds one by one; beyond, it is summed as a series
+DIRECT_TERMS = 100_000
+#: a series' or a limit's value stands where two ways of computing it agree to this fraction of
+#: the working digits (else the point drops out: the precision ladder is not fooled by an
+#: extrapolation that is stably wrong, as Richardson's is for a limit in √h)
+AGREEMENT_FRACTION = 0.8
+
+
+def _agreeing(a, b):
+    """``a`` where it and ``b`` agree to AGREEMENT_FRACTION of the working digits, else ValueError."""
+    tol = mpmath.mpf(10) ** (-AGREEMENT_FRACTION * mpmath.mp.dps)
+    if not (mpmath.isfinite(a) and mpmath.isfinite(b)) or abs(a - b) > tol * max(abs(a), abs(b), tol):
+        raise ValueError("no value the numbers agree on (a series or a limit that converges too slowly here)")
+    return a
+
+
+def _integer(v) -> int:
+    """A bound of a sum that must be an integer."""
+    n = mpmath.nint(v)
+    if abs(v - n) > mpmath.mpf(10) ** (-mpmath.mp.dps // 2):
+        raise ValueError(f"a bound of a sum or product is not an integer: {v}")
+    return int(n)
+
+
+def _numeric_form(form: sp.Basic, outer: tuple[sp.Symbol, ...]):
+    """An mpmath-callable value of a sum, product, limit or derivative at the values of
+    ``outer`` (its free symbols), its body compiled once (:func:`mp_function`, so that what
+    it holds — an integral, another sum — is handled the same way)."""
+    if isinstance(form, (sp.Sum, sp.Product)):
+        return _series(form, outer)
+    if isinstance(form, sp.Limit):
+        return _limit(form, outer)
+    return _derivative(form, outer)
+
+
+def _series(form, outer):
+    if len(form.limits) > 1:  # Σ_j Σ_i f: the outer sum of the inner one
+        inner = type(form)(form.function, *form.limits[:-1])
+        return _series(type(form)(inner, form.limits[-1]), outer)
+    (var, lo, hi), = form.limits
+    n = sp.Dummy("n")
+    term = mp_function(form.function.xreplace({var: n}), (n,) + outer)
+    bounds = mp_lambdify(outer, [lo, hi])
+    product = isinstance(form, sp.Product)
+
+    def value(*vals):
+        vals = vals[:len(outer)]
+        a, b = bounds(*vals)
+        f = lambda k: term(k, *vals)  # noqa: E731
+        infinite = not (mpmath.isfinite(a) and mpmath.isfinite(b))
+        if not infinite and abs(_integer(b) - _integer(a)) <= DIRECT_TERMS:
+            ks = range(_integer(a), _integer(b) + 1)
+            return mpmath.fprod(f(k) for k in ks) if product else mpmath.fsum(f(k) for k in ks)
+        interval = [a if not mpmath.isfinite(a) else _integer(a), b if not mpmath.isfinite(b) else _integer(b)]
+        if not product:
+            direct = _geometric_sum(f, *interval)
+            if direct is not None:
+                return direct
+        total = mpmath.nprod if product else mpmath.nsum
+        first = total(f, interval)
+        with mpmath.workdps(mpmath.mp.dps + 10):
+            second = total(f, interval)
+        return _agreeing(first, second)
+    return value
+
+
+#: the most terms a series is summed term by term before extrapolation takes over
+SERIES_TERMS = 400
+#: the largest ratio of successive terms at which the tail is bounded geometrically
+SERIES_RATIO = 0.95
+#: the last terms whose ratios bound the tail
+SERIES_WINDOW = 8
+
+
+def _geometric_sum(f, a, b):
+    """Σ f(n) over a half-line (or the whole line, as two), term by term while the terms fall
+    off at least geometrically: the sum stops where the tail bound |t|·r/(1 − r), r the largest
+    ratio of the last :data:`SERIES_WINDOW` terms, is below the working precision.  None where
+    the terms do not fall off so within :data:`SERIES_TERMS` (a series that converges slowly,
+    or not: extrapolation, two ways, decides).  A power series inside its disc of convergence —
+    most series of a formula collection — takes a few dozen terms this way, where Richardson's
+    and Shanks's extrapolations take hundreds of evaluations and a quadratic cost."""
+    if not mpmath.isfinite(a) and not mpmath.isfinite(b):
+        right, left = _geometric_sum(f, 0, mpmath.inf), _geometric_sum(f, -mpmath.inf, -1)
+        return None if right is None or left is None else right + left
+    start, step = (a, 1) if mpmath.isfinite(a) else (b, -1)
+    eps = mpmath.mpf(2) ** (-mpmath.mp.prec - 4)
+    with mpmath.workprec(mpmath.mp.prec + 20):
+        total, last, ratios = mpmath.mpf(0), None, []
+        for i in range(SERIES_TERMS):
+            t = f(start + step * i)
+            total += t
+            size = abs(t)
+            if last is not None and last > 0:
+                ratios = (ratios + [size / last])[-SERIES_WINDOW:]
+            if size > 0:
+                last = size
+            if len(ratios) == SERIES_WINDOW:
+                r = max(ratios)
+                if r < SERIES_RATIO and size * r / (1 - r) <= eps * abs(total):
+                    return +total
+            if not mpmath.isfinite(total):
+                return None
+    return None
+
+
+def _limit(form, outer):
+    body, var, point, side = form.args
+    x = sp.Dummy("x")
+    f = mp_function(body.xreplace({var: x}), (x,) + outer)
+    at = mp_lambdify(outer, point)
+    sides = {"+": (1,), "-": (-1,), "+-": (1, -1)}[str(side)]
+
+    def value(*vals):
+        vals = vals[:len(outer)]
+        x0 = at(*vals)
+        g = lambda t: f(t, *vals)  # noqa: E731
+        out = []
+        for direction in sides:
+            # Richardson's extrapolation (mpmath's default) and the exponential sequence
+            # (exp=True) must agree: each alone can be stably wrong
+            out.append(_agreeing(mpmath.limit(g, x0, direction=direction),
+                                 mpmath.limit(g, x0, direction=direction, exp=True)))
+        return _agreeing(out[0], out[-1])
+    return value
+
+
+def _derivative(form, outer):
+    counts = [(v, int(c)) for v, c in form.variable_count]
+    dummies = tuple(sp.Dummy(f"d{i}") for i in range(len(counts)))
+    body = mp_function(form.expr.xreplace({v: d for (v, _), d in zip(counts, dummies)}), dummies + outer)
+    where = [outer.index(v) for v, _ in counts]
+    orders = tuple(c for _, c in counts)
+
+    def value(*vals):
+        vals = vals[:len(outer)]
+        at = tuple(vals[i] for i in where)
+        return mpmath.diff(lambda *ds: body(*ds, *vals), at if len(at) > 1 else at[0],
+                           orders if len(orders) > 1 else orders[0])
+    return value
 
 
 # integrand evaluations flint may spend before mpmath takes over: at least QUADRATURE_EVALUATIONS,

@@ -108,6 +108,32 @@ def _approx(expr, value, places=None):
 _approx.places_of = 1  # the reader passes the decimal places printed in the second argument
 
 
+class Landau(sp.Function):
+    """An O-term as printed: ``Landau(g, x, x0)`` is "a quantity bounded by a constant times |g|
+    as x → x0".  Kept verbatim — sympy's own ``Order`` absorbs the terms of a sum it thinks
+    smaller (and asks every function for its leading term), which would change what the text
+    states; the checker decides a relation with O-terms along a sequence x → x0."""
+
+    nargs = 3
+
+    def _latex(self, printer):
+        return rf"O\left({printer._print(self.args[0])}\right)"
+
+
+def _landau(expr, *passage):
+    """``O(g, (x, x0))`` as a transcription writes it (sympy's spelling); ``O(g)`` alone is the
+    passage to 0 of g's one symbol."""
+    if len(passage) == 1 and isinstance(passage[0], sp.Tuple) and len(passage[0]) == 2:
+        var, point = passage[0]
+    elif not passage and len(sp.sympify(expr).free_symbols) == 1:
+        (var,), point = sp.sympify(expr).free_symbols, sp.Integer(0)
+    else:
+        raise SymbolError("O(g, (x, x0)): an O-term names its variable and the point it tends to")
+    if not isinstance(var, sp.Symbol):
+        raise SymbolError(f"O(g, (x, x0)): {var} is not a symbol")
+    return Landau(expr, var, point)
+
+
 def _symbol(name):
     if not (isinstance(name, str) and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name)):
         raise SymbolError(f"Symbol({name!r}): a name is a letter followed by letters, digits or _")
@@ -129,10 +155,10 @@ _SPECIAL = ("factorial", "factorial2", "binomial", "gamma", "loggamma", "lowerga
             "dirichlet_eta", "LambertW", "erf", "erfc", "erfi", "erfinv", "erfcinv", "Ei", "expint", "E1", "li",
             "Li", "Si", "Ci", "Shi", "Chi", "fresnels", "fresnelc", "besselj", "bessely", "besseli", "besselk",
             "hankel1", "hankel2", "jn", "yn", "airyai", "airybi", "airyaiprime", "airybiprime", "hyper", "meijerg",
-            "legendre", "assoc_legendre", "hermite", "laguerre", "assoc_laguerre", "chebyshevt", "chebyshevu",
+            "appellf1", "legendre", "assoc_legendre", "hermite", "laguerre", "assoc_laguerre", "chebyshevt", "chebyshevu",
             "gegenbauer", "jacobi", "Ynm", "elliptic_k", "elliptic_f", "elliptic_e", "elliptic_pi", "bernoulli",
             "harmonic")
-_FORMS = ("Sum", "Product", "Integral", "Derivative", "Limit", "Subs", "Order", "O", "Eq", "Ne", "Lt", "Le",
+_FORMS = ("Sum", "Product", "Integral", "Derivative", "Limit", "Subs", "Eq", "Ne", "Lt", "Le",
           "Gt", "Ge", "And", "Or", "Not", "Rational", "Integer", "Tuple")
 _CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "EulerGamma": sp.EulerGamma,
               "GoldenRatio": sp.GoldenRatio, "Catalan": sp.Catalan}
@@ -142,7 +168,8 @@ _CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "EulerGamma": sp.E
 FUNCTIONS: MappingProxyType = MappingProxyType({
     **{name: getattr(sp, name) for name in _ELEMENTARY + _SPECIAL + _FORMS},
     **_CONSTANTS,
-    "ln": sp.log, "Eq": printed_eq, "Symbol": _symbol, "Function": _function, "Approx": _approx,
+    "ln": sp.log, "Eq": printed_eq, "O": _landau, "Order": _landau, "Symbol": _symbol, "Function": _function,
+    "Approx": _approx,
     "D": D, "Fj": Fj, "Ej": Ej, "Kc": Kc, "Ec": Ec, "arccotg": arccotg,
     **SPECIAL_FUNCTIONS,  # DLMF chapters 19, 20 and 22 in DLMF's notation (modulus k)
 })

@@ -115,6 +115,8 @@ def _allowed(node) -> None:
         if _naming_call(node):
             node.args[0]._naming = True  # its one string is a name (checked when it is built)
             return
+        if _direction(node) is not None:
+            node.args[3]._naming = True  # Limit(f, x, 0, "+"): the side, as sympy writes it
         if isinstance(node.func, ast.Attribute):
             _fail(node, f"attribute access (.{node.func.attr}) is not allowed in a transcription"
                   + (": write x(value) for a function x at a value, or Subs(expr, t, value)"
@@ -134,6 +136,18 @@ def _allowed(node) -> None:
     if isinstance(node, ast.Subscript):
         _fail(node, "a subscript x[...] is not allowed: write x_0 as a declared symbol")
     _fail(node, f"{type(node).__name__} is not allowed in a transcription")
+
+
+#: the sides a limit may be taken from, as sympy's Limit writes them
+DIRECTIONS = frozenset({"+", "-", "+-"})
+
+
+def _direction(node) -> str | None:
+    """The side of ``Limit(f, x, x0, "+")`` written as its fourth argument (None: not so)."""
+    if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "Limit"
+            and len(node.args) == 4 and isinstance(node.args[3], ast.Constant) and node.args[3].value in DIRECTIONS):
+        return node.args[3].value
+    return None
 
 
 def _naming_call(node) -> bool:
@@ -223,7 +237,8 @@ class _Builder:
             head = self.call(node.func)
             return head(*[self.build(a) for a in node.args])
         name = node.func.id
-        args = [self.build(a) for a in node.args]
+        side = _direction(node)
+        args = [self.build(a) for a in node.args[:3]] + [side] if side else [self.build(a) for a in node.args]
         kwargs = {k.arg: (sp.true if k.value.value is True else sp.false if k.value.value is False else k.value.value)
                   if k.arg != "dir" else k.value.value for k in node.keywords}
         if "evaluate" in kwargs:

@@ -1,5 +1,6 @@
 """Special functions of DLMF chapters 19 (elliptic integrals) and 22 (Jacobian elliptic
-functions), with the theta functions of chapter 20 that chapter 22 is built on.
+functions), with the theta functions of chapter 20 that chapter 22 is built on and Weierstrass's
+℘, ζ, σ of chapter 23.
 
 Every function is a sympy ``Function`` subclass in DLMF's notation and conventions — the
 **modulus** k throughout (mpmath, python-flint and sympy's ``elliptic_k`` … take m = k²),
@@ -34,6 +35,7 @@ from quasicentral.notation.special.legendre import (
 from quasicentral.notation.special.theta import (
     EllipticNome, JacobiTheta1, JacobiTheta2, JacobiTheta3, JacobiTheta4,
 )
+from quasicentral.notation.special.weierstrass import WeierstrassP, WeierstrassSigma, WeierstrassZeta
 
 FUNCTIONS = MappingProxyType({cls.__name__: cls for cls in (
     # chapter 19
@@ -48,6 +50,8 @@ FUNCTIONS = MappingProxyType({cls.__name__: cls for cls in (
     JacobiArcSN, JacobiArcCN, JacobiArcDN, JacobiArcNS, JacobiArcNC, JacobiArcND,
     JacobiArcSC, JacobiArcSD, JacobiArcCS, JacobiArcCD, JacobiArcDS, JacobiArcDC,
     JacobiTheta1, JacobiTheta2, JacobiTheta3, JacobiTheta4, EllipticNome,
+    # chapter 23, which chapters 19 and 22 use (half-periods ω₁, ω₃)
+    WeierstrassP, WeierstrassZeta, WeierstrassSigma,
 )})
 
 __all__ = sorted(FUNCTIONS) + ["FUNCTIONS"]

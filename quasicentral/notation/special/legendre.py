@@ -464,8 +464,10 @@ class EllipticPi(DLMFFunction):
 class EllipticKp(DLMFFunction):
     r"""K′(k) = K(k′), k′ = √(1 − k²) (DLMF 19.2.9 with 19.2.8), **modulus** k.
 
-    K′ depends on k′² = 1 − k² only, so the branch of k′ does not matter: K′(k) = R_F(0, k², 1)
-    (19.25.1 with k ↔ k′), exact in k² near k = 0 where K(√(1 − k²)) would cancel.  Cut:
+    In the right half-plane K′(k) = K(k′) = R_F(0, k², 1) (19.25.1 with k ↔ k′), exact in k² near
+    k = 0 where K(√(1 − k²)) would cancel; in the left half-plane DLMF 19.2.9 continues it as
+    K(k′) ∓ 2iK(k) for π/2 < ±ph k < π (:func:`continuation_side`), so that K′ is analytic across
+    the imaginary axis and not even in k there.  Cut:
     k² ∈ (−∞, 0] (k imaginary), where the value is K(k′) at the real k′ > 1, i.e. mpmath's
     ``ellipk(1 − k²)`` on its own cut.  dK′/dk = −(E′ − k²K′)/(k k′²) (19.4.1 with k ↔ k′).
 
@@ -497,7 +499,7 @@ class EllipticKp(DLMFFunction):
         m, mc = parameters(k)
         if is_real(m) and real(m) < 0:
             return mpmath.ellipk(mc)
-        return mpmath.elliprf(0, m, 1)
+        return mpmath.elliprf(0, m, 1) + continuation_side(k) * 2j * EllipticK.mp(k)
 
     @ball_route
     def ball(k, analytic=False):
@@ -506,7 +508,11 @@ class EllipticKp(DLMFFunction):
             return nan_ball()
         if m.imag.contains(0) and not (m.real > 0):
             return mc.elliptic_k()
-        return acb.elliptic_rf(acb(0), m, acb(1))
+        side = ball_continuation_side(k)
+        if side is None:
+            return nan_ball()
+        base = acb.elliptic_rf(acb(0), m, acb(1))
+        return base + side * 2 * acb(0, 1) * m.elliptic_k() if side else base
 
 
 class EllipticEp(DLMFFunction):
@@ -542,7 +548,9 @@ class EllipticEp(DLMFFunction):
         m, mc = parameters(k)
         if is_real(m) and real(m) < 0:
             return mpmath.ellipe(mc)
-        return 2 * mpmath.elliprg(0, m, 1)
+        side = continuation_side(k)
+        base = 2 * mpmath.elliprg(0, m, 1)
+        return base + side * 2j * (EllipticK.mp(k) - EllipticE.mp(k)) if side else base
 
     @ball_route
     def ball(k, analytic=False):
@@ -551,7 +559,31 @@ class EllipticEp(DLMFFunction):
             return nan_ball()
         if m.imag.contains(0) and not (m.real > 0):
             return mc.elliptic_e()
-        return 2 * acb.elliptic_rg(acb(0), m, acb(1))
+        side = ball_continuation_side(k)
+        if side is None:
+            return nan_ball()
+        base = 2 * acb.elliptic_rg(acb(0), m, acb(1))
+        return base + side * 2 * acb(0, 1) * (m.elliptic_k() - m.elliptic_e()) if side else base
+
+
+def continuation_side(k) -> int:
+    """DLMF 19.2.9: K′(k) = K(k′) for |ph k| ≤ π/2, and K(k′) ∓ 2iK(k) for π/2 < ±ph k < π
+    (E′ likewise with K − E): 0 in the right half-plane (and on the real line), −1 above the
+    left half-plane's real axis, +1 below it — the factor of 2iK(k) added."""
+    if not isinstance(k, mpmath.mpc) or k.imag == 0 or not (k.real < 0):
+        return 0
+    return -1 if k.imag > 0 else 1
+
+
+def ball_continuation_side(k):
+    """:func:`continuation_side` of a ball; None where the ball straddles a boundary of the cases."""
+    if k.real > 0 or (k.imag.is_exact() and k.imag == 0):
+        return 0
+    if k.real < 0 and k.imag > 0:
+        return -1
+    if k.real < 0 and k.imag < 0:
+        return 1
+    return None
 
 
 class AGM(DLMFFunction):
