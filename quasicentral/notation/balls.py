@@ -127,6 +127,17 @@ _UNARY = {  # sympy function -> the acb expression of its argument ``{a}`` (``an
     # |z| is analytic nowhere: an integrand with one gets no ball (mpmath integrates it)
     sp.Abs: "(acb('nan') if an else acb(abs({a})))",
     sp.elliptic_k: "acb.elliptic_k({a})", sp.sinc: "{a}.sinc()",
+    # entire or meromorphic: the same function inside an integrand
+    sp.tanh: "{a}.tanh()", sp.coth: "{a}.coth()", sp.cot: "{a}.cot()", sp.sec: "{a}.sec()", sp.csc: "{a}.csc()",
+    sp.gamma: "{a}.gamma()", sp.erf: "{a}.erf()", sp.erfc: "{a}.erfc()", sp.erfi: "{a}.erfi()",
+    sp.zeta: "{a}.zeta()", sp.Si: "{a}.si()", sp.Shi: "{a}.shi()",
+    # cut along a ray (principal branches, as sympy and mpmath take them): no analytic form,
+    # so an integrand holding one gets no ball (mpmath integrates it), as |z| above
+    sp.asinh: "(acb('nan') if an else {a}.asinh())", sp.acosh: "(acb('nan') if an else {a}.acosh())",
+    sp.atanh: "(acb('nan') if an else {a}.atanh())", sp.loggamma: "(acb('nan') if an else {a}.lgamma())",
+    sp.Ei: "(acb('nan') if an else {a}.ei())", sp.Ci: "(acb('nan') if an else {a}.ci())",
+    sp.Chi: "(acb('nan') if an else {a}.chi())", sp.li: "(acb('nan') if an else {a}.li())",
+    sp.LambertW: "(acb('nan') if an else {a}.lambertw())",
 }
 _BINARY = {sp.elliptic_f: "acb.elliptic_f({a}, {b})", sp.elliptic_e: "acb.elliptic_e_inc({a}, {b})"}
 _EXACT_INTEGER = 2**53  # integers below are exact balls at any working precision (≥ 53 bits) either way
@@ -212,7 +223,7 @@ class _Source:
             return f"({base}.log(analytic=an) * {power}).exp()"
         if isinstance(e, (sp.sin, sp.cos)) and e.args[0] in self.paired:
             return f"{self.sin_cos(e.args[0])}[{0 if isinstance(e, sp.sin) else 1}]"
-        if e.func in _UNARY:
+        if e.func in _UNARY and len(e.args) == 1:
             return _UNARY[e.func].format(a=self.emit(e.args[0]))
         if e.func in _BINARY and len(e.args) == 2:
             return _BINARY[e.func].format(a=self.emit(e.args[0]), b=self.emit(e.args[1]))

@@ -499,7 +499,10 @@ class EllipticKp(DLMFFunction):
         m, mc = parameters(k)
         if is_real(m) and real(m) < 0:
             return mpmath.ellipk(mc)
-        return mpmath.elliprf(0, m, 1) + continuation_side(k) * 2j * EllipticK.mp(k)
+        side = continuation_side(k)
+        base = mpmath.elliprf(0, m, 1)
+        # only where the side adds 2iK(k): K(k) is infinite at k = ±1, where K′ = K(0) = π/2
+        return base + side * 2j * EllipticK.mp(k) if side else base
 
     @ball_route
     def ball(k, analytic=False):
