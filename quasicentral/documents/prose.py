@@ -22,6 +22,7 @@ KINDS_CS = {
     "missing factor": "chybějící činitel", "limits of integration": "integrační meze",
     "range of validity": "obor platnosti", "OCR glyph": "chybně přepsaný znak",
     "derivative order": "řád derivace", "parenthesis": "závorky", "coefficient": "koeficient",
+    "rounding": "zaokrouhlení",
 }
 
 #: Sentences and labels, per language.  ``{refs}`` is a list of equation references.

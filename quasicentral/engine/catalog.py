@@ -15,7 +15,8 @@ from pathlib import Path
 
 import sympy as sp
 
-from quasicentral.notation.symbols import SymbolError, SymbolTable
+from quasicentral.notation.symbols import Approx, SymbolError, SymbolTable
+from quasicentral.notation.transcription import decimal_literal, decimal_literals, decimal_places
 from quasicentral.notation.units import UnitError, parse_dim
 
 
@@ -93,9 +94,37 @@ class Entry:
             out[symbol_named(self.symbols, name)] = parse_dim(text)
         return out
 
-    def relations(self) -> list[sp.Basic]:
+    @cached_property
+    def decimals(self) -> dict:
+        """The decimal literals the transcription prints: {exact value: decimal places}."""
+        return decimal_literals(self.printed_text)
+
+    def relations(self, roundings: bool = False) -> list[sp.Basic]:
+        """The printed relations; a bare expression beside ``approx`` as its printed rounding
+        (:class:`~quasicentral.notation.symbols.Approx`), and with ``roundings`` (an identity
+        text, where a printed number means what it shows) an equation of an expression and a
+        decimal literal too."""
         p = self.printed
-        return list(p) if isinstance(p, (sp.Tuple, list, tuple)) else [p]
+        rels = list(p) if isinstance(p, (sp.Tuple, list, tuple)) else [p]
+        if self.approx:
+            value, places = decimal_literal(self.approx), decimal_places(self.approx)
+            rels = [Approx(r, value, places) if isinstance(r, sp.Expr) else r for r in rels]
+        if roundings and self.decimals:
+            rels = [_as_rounding(r, self.decimals) for r in rels]
+        return rels
+
+
+def _as_rounding(rel, decimals: dict):
+    """``Eq(x, 0.685…)`` as the rounding ``Approx(x, 0.685…, places)`` where one side is a printed
+    decimal literal (or its negative) and the other is not a bare number."""
+    if not isinstance(rel, sp.Eq):
+        return rel
+    for side, other in ((rel.rhs, rel.lhs), (rel.lhs, rel.rhs)):
+        if side.is_Rational and not other.is_Rational:
+            places = decimals.get(side, decimals.get(-side))
+            if places is not None:
+                return Approx(other, side, places)
+    return rel
 
 
 def locate_key(entry: Entry, key: str) -> str:

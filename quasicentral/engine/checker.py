@@ -28,7 +28,7 @@ from dataclasses import replace
 
 import sympy as sp
 
-from quasicentral.engine import asymptotic
+from quasicentral.engine import asymptotic, rounding
 from quasicentral.engine.claims import CannotCompare, Claim, claims_for, decided  # noqa: F401 - re-exported
 from quasicentral.engine.dimensions import check_relation
 from quasicentral.engine.ladder import numeric
@@ -53,8 +53,8 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
     """The verdict on ``printed`` against ``derivation``'s ``result`` (see the module
     docstring); ``failed`` is the error of a derivation that could not be computed."""
     # a text that declares no dimension at all (mathematics: a formula collection) has none to check
-    findings = tuple(c for c in (check_relation(rel, dims) for rel in printed) if c.inconsistent or c.undetermined) \
-        if dims else ()
+    findings = tuple(c for c in (check_relation(rel, dims) for rel in printed if not rounding.relation_is_rounding(rel))
+                     if c.inconsistent or c.undetermined) if dims else ()
     inconsistent = tuple(c for c in findings if c.inconsistent)
     if inconsistent and not opts.numbers_after_dimensions:
         return Refuted(Method.DIMENSIONAL, Reason.of(Code.DIMENSIONAL, numbers=None), dimensions=findings)
@@ -65,6 +65,15 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
             return Refuted(Method.DIMENSIONAL, Reason.of(Code.DIMENSIONAL, numbers=reason), dimensions=findings)
         return Inconclusive(Method.NONE, reason, dimensions=findings)
 
+    roundings = [rel for rel in printed if rounding.relation_is_rounding(rel)]
+    if roundings:
+        # a printed rounding is decided by the exact value alone; the rest of a chain as usual
+        rest = [rel for rel in printed if not rounding.relation_is_rounding(rel)]
+        defs = derivation.domain.definition_map(table)
+        verdicts = [_rounding_verdict(rel, defs, opts) for rel in roundings]
+        if rest:
+            verdicts.append(check(rest, dims, derivation, label, opts, table, result, failed))
+        return replace(combine(verdicts), dimensions=findings)
     if failed is not None:
         return unsettled(Reason.of(Code.DERIVATION_FAILED, error=failed))
     if derivation.mode is Mode.IDENTITY and asymptotic.passage_relation(printed):
@@ -96,6 +105,13 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
         return Refuted(Method.DIMENSIONAL, Reason.of(Code.DIMENSIONAL, numbers=out.name), out.points, out.digits,
                        dimensions=findings)
     return replace(out, dimensions=findings)
+
+
+def _rounding_verdict(rel, defs: dict, opts: Options) -> Verdict:
+    try:
+        return rounding.check(rel, defs, opts)
+    except Exception as exc:  # noqa: BLE001 - a failure of the numbers is this entry's, not the run's
+        return Inconclusive(Method.NONE, Reason.of(Code.STAGE_FAILED, stage="evaluation", error=_error(exc)))
 
 
 def _claim_verdict(claim: Claim, derivation: Derivation, label: str, opts: Options, table: SymbolTable,

@@ -28,6 +28,8 @@ class Claim:
     quantity: Reason  # what the two values are (a Q_… reason)
     scale: sp.Expr | None = None  # magnitude the difference is measured against
     at_most: bool = False  # printed ≤ derived is claimed, not printed = derived
+    #: an implicit condition (unknown, f): the claim holds where f = 0, the unknown solved for
+    implicit: tuple = ()
 
 
 #: the inequalities, each as (is "left ≤ right" rather than "left ≥ right")
@@ -90,7 +92,7 @@ def claims_for(printed: list[sp.Basic], derivation, result) -> list[Claim]:
         return identity_claims(printed, derivation.unknowns or ())
     printed = [decided(rel) for rel in printed]
     if mode is Mode.CONDITION:
-        return _condition_claims(printed, result)
+        return _condition_claims(printed, result, derivation.unknowns)
     if mode is Mode.SUBSTITUTE:
         return _model_claims(printed, dict(result or {}))
     derived = [doit_derivatives(d) if isinstance(d, sp.Basic) else d for d in as_list(result)]
@@ -135,12 +137,27 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
     return out
 
 
-def _condition_claims(printed: list, result) -> list[Claim]:
+def _condition_claims(printed: list, result, unknowns=None) -> list[Claim]:
+    """The derived quantity must vanish under the printed condition: substituted where the
+    condition names what the quantity holds (``Eq(A, 0)``, ``Eq(ω², k/m)``), else *implicit* —
+    "x solves f(x) = 0" — and then checked only at points where it holds: the unknown (the
+    derivation's ``unknowns``, or the one symbol the condition and the quantity share) is
+    solved for at every point (:func:`quasicentral.notation.domain.on_condition`), so that no
+    point, and no witness, violates the premise."""
     if not all(isinstance(r, sp.Eq) for r in printed):
         raise CannotCompare(Reason(Code.CONDITION_NOT_EQUATION))
     cond = {r.lhs: r.rhs for r in printed}
     q = doit_derivatives(result)
-    return [Claim(q.subs(cond), sp.Integer(0), Reason.of(Code.Q_UNDER_CONDITION, quantity=sp.sstr(q)), sp.Abs(q))]
+    quantity = Reason.of(Code.Q_UNDER_CONDITION, quantity=sp.sstr(q))
+    substituted = q.subs(cond)
+    if substituted != q or len(printed) != 1:
+        return [Claim(substituted, sp.Integer(0), quantity, sp.Abs(q))]
+    f = doit_derivatives(printed[0].lhs - printed[0].rhs)
+    candidates = [u for u in (unknowns or ()) if u in f.free_symbols] or \
+        sorted(f.free_symbols & q.free_symbols, key=str) or sorted(f.free_symbols, key=str)
+    if len(candidates) != 1:
+        raise CannotCompare(Reason.of(Code.CONDITION_UNKNOWN, symbols=tuple(str(c) for c in candidates)))
+    return [Claim(q, sp.Integer(0), quantity, None, implicit=(candidates[0], f))]
 
 
 def _model_claims(printed: list, model: dict) -> list[Claim]:

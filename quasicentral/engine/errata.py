@@ -46,6 +46,7 @@ class Kind(str, Enum):
     DERIVATIVE_ORDER = "derivative order"
     PARENTHESIS = "parenthesis"
     COEFFICIENT = "coefficient"
+    ROUNDING = "rounding"  # a printed decimal that the exact value does not round to
 
 
 KINDS = tuple(k.value for k in Kind)

@@ -27,7 +27,8 @@ from quasicentral.engine.reasons import Code, Reason
 from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, Verified, Witness
 from quasicentral.engine.witness import witness_at
 from quasicentral.notation import bridge
-from quasicentral.notation.domain import JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, seed_for, substitute_definitions
+from quasicentral.notation.domain import (JET_RANGE, POSITIVE_JET_RANGE, Domain, Sampler, on_condition, seed_for,
+                                          substitute_definitions)
 from quasicentral.notation.symbols import SymbolTable
 
 #: the exceptions an evaluation at one point may raise: the point drops out
@@ -237,13 +238,24 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     if unknown:  # a function the text names but does not define (a sequence a(n)): no numbers
         return Inconclusive(Method.NONE, Reason.of(Code.NO_NUMERIC_FORM, function=unknown[0]))
     syms = set(p.free_symbols) | set(d.free_symbols) | (scale.free_symbols if scale is not None else set())
+    condition = prepared(claim.implicit[1], defs) if claim.implicit else None
+    if condition is not None:
+        syms |= condition.free_symbols | {claim.implicit[0]}
     try:
         integral = p.has(sp.Integral) or d.has(sp.Integral)
         count = min(opts.points, opts.integral_points) if integral else opts.points
         pts = Sampler(domain, table, sorted(syms, key=str), seed_for(label), _jet_ranges(syms)).draw(count)
+        if condition is not None:
+            # only where the condition holds: the unknown solved for, each distinct point once
+            # (a condition in the unknown alone holds at its roots, perhaps at one point)
+            unknown = claim.implicit[0]
+            solved = on_condition(pts, unknown, condition, domain.range_map(table))
+            pts = list({tuple(sorted(pt.items(), key=lambda kv: str(kv[0]))): pt for pt in solved}.values())
+            if not pts:
+                return Inconclusive(Method.NONE, Reason.of(Code.CONDITION_UNSOLVED, unknown=str(unknown), count=0))
     except KeyError as exc:
         return Inconclusive(Method.NONE, Reason.of(Code.NO_RANGE, symbol=str(exc.args[0])))
-    if len(pts) < max(3, count // 2):
+    if condition is None and len(pts) < max(3, count // 2):
         return Inconclusive(Method.NONE, Reason(Code.TOO_FEW_POINTS))
     args = tuple(sorted(syms, key=str))
     ev = _Evaluator(p, d, scale, args, claim.at_most)
@@ -253,7 +265,7 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     if early_divergence is not None:
         return early_divergence
     rows, early, first_error = _evaluate(ev, pts, opts)
-    if not early and len(rows) < max(3, (4 * len(pts) + 4) // 5):
+    if not early and len(rows) < (max(3, (4 * len(pts) + 4) // 5) if condition is None else max(1, len(pts) // 2)):
         # a point where a side cannot be evaluated is not evidence of agreement: at most a
         # fifth of them may drop out
         return _divergence(p, pts, claim, opts, False) or Inconclusive(

@@ -30,7 +30,7 @@ class Code(str, Enum):
     # --- verified ----------------------------------------------------------------------------
     AGREES = "agrees"  # n, of, digits, confirmed, top, vacuous
     PROVED = "proved"  # numbers: the AGREES of the same points
-    ROUNDS_TO = "rounds-to"  # value, digits: an exact value that rounds to the printed digits
+    ROUNDS_TO = "rounds-to"  # value, printed, places: an exact value that rounds to the printed decimal
     HOLDS = "holds"  # n, of, top: an inequality that holds at every point
     LIMIT_FOUND = "limit-found"  # how ("sympy" | "sequence"), value: a limit that agrees
     ORDER_HOLDS = "order-holds"  # n, variable, point, steps: an O-term bounded along the passage
@@ -44,7 +44,7 @@ class Code(str, Enum):
     INTEGRAND_GROWS = "integrand-grows"  # variable, end, order
     TERMS_GROW = "terms-grow"  # variable, ratio100, ratio200
     DIMENSIONAL = "dimensional"  # numbers: None (not computed) | a verdict name | a Reason
-    ROUNDS_OTHERWISE = "rounds-otherwise"  # printed, exact, digits
+    ROUNDS_OTHERWISE = "rounds-otherwise"  # printed, exact, places
     # --- inconclusive -----------------------------------------------------------------------
     NOTHING_TO_CHECK = "nothing-to-check"
     NO_DERIVATION = "no-derivation"
@@ -67,10 +67,14 @@ class Code(str, Enum):
     NO_NUMERIC_FORM = "no-numeric-form"  # function
     ONE_POINT_DOMAIN = "one-point-domain"  # symbol
     CONDITION_UNSOLVED = "condition-unsolved"  # unknown, count
+    CONDITION_UNKNOWN = "condition-unknown"  # symbols: an implicit condition in none or several of them
     ASYMPTOTIC_WITHOUT_LIMIT = "asymptotic-without-limit"
     NOTATION_ONLY = "notation-only"
     LIMIT_UNDECIDED = "limit-undecided"  # variable, point
     DEFINES = "defines"  # symbols: a definition of what the entry introduces (notation)
+    ROUNDING_FREE = "rounding-free"  # symbols: a printed rounding of a value that depends on symbols
+    ROUNDING_TIE = "rounding-tie"  # printed, places: the exact value lies on a half of the last place
+    ROUNDING_UNDECIDED = "rounding-undecided"  # printed, places: no precision tried decides the rounding
     NOT_EQUAL_ONLY = "not-equal-only"  # a printed a ≠ b: true almost everywhere, nothing to check
     # --- dimensions (the finding on one relation) -------------------------------------------
     DIM_ADDS = "dim-adds"  # first, other, sum, term
@@ -92,6 +96,7 @@ class Code(str, Enum):
     USES_MISMATCH = "uses-mismatch"  # declared, used: a derivation's uses= is not what it used
     # --- what a witness's two values are -------------------------------------------------------
     Q_VALUE = "q-value"  # both sides of an expression
+    Q_ROUNDING = "q-rounding"  # the printed decimal and the exact value it rounds
     Q_RESIDUAL = "q-residual"  # lhs − rhs on the derived model
     Q_EXPRESSION = "q-expression"  # a bare printed expression on the derived model
     Q_UNDER_CONDITION = "q-under-condition"  # quantity

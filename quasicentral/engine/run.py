@@ -25,6 +25,7 @@ from quasicentral.engine.checker import Options, check
 from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
 from quasicentral.engine.identity import identity_derivation
 from quasicentral.engine.reasons import Code, Reason
+from quasicentral.engine.registry import Mode
 from quasicentral.engine.verdict import EntryRecords, Inconclusive, Method, Outcome, Refuted, Status, Verified
 from quasicentral.engine.workers import map_grouped
 from quasicentral.files import read_private, write_text
@@ -92,7 +93,8 @@ def _verify_entry(ws, entry: catalog.Entry, opts: Options, records: EntryRecords
         raise
     except BaseException as exc:  # noqa: BLE001 - a failing derivation (even its sys.exit) is this entry's
         failed = _error(exc)
-    v = check(entry.relations(), entry.dims, derivation, entry.id, opts, entry.symbols, result, failed)
+    v = check(entry.relations(roundings=derivation.mode is Mode.IDENTITY), entry.dims, derivation, entry.id, opts,
+              entry.symbols, result, failed)
     noted = _uses_checked(ws, derivation, failed)
     rec = records.erratum
     if rec is not None:

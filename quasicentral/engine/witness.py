@@ -157,7 +157,7 @@ def _ball_digits(b, want: int) -> int:
 def _arb_digits(r, want: int) -> int:
     if r.is_exact() and r == 0:
         return want
-    mid, rad = _exact(r.mid()), _exact(r.rad())  # exact (lower()/upper() would round)
+    mid, rad = exact_fraction(r.mid()), exact_fraction(r.rad())  # exact (lower()/upper() would round)
     lo, hi = mid - rad, mid + rad
     if lo == 0 or hi == 0 or (lo > 0) != (hi > 0):
         return 0
@@ -177,7 +177,7 @@ def _ball_str(b, n: int) -> str:
 def _arb_str(r, n: int) -> str:
     if r.is_exact() and r == 0:
         return "0"
-    return round_significant(_exact(r.mid()), n)
+    return round_significant(exact_fraction(r.mid()), n)
 
 
 def complex_string(re: str, im: str) -> str:
@@ -189,7 +189,7 @@ def complex_string(re: str, im: str) -> str:
     return f"{mag}i" if re == "0" and sign == "+" else f"-{mag}i" if re == "0" else f"{re} {sign} {mag}i"
 
 
-def _exact(x) -> Fraction:
+def exact_fraction(x) -> Fraction:
     """An exact arb (a ball's end), mpf or Python number as a fraction."""
     if isinstance(x, (int, float)):
         return Fraction(x)
@@ -246,7 +246,7 @@ def _agreed(a, b, want: int) -> tuple[str, int]:
     a, b = ra, rb
     if a == 0 and b == 0:
         return "0", want
-    fa, fb = _exact(a), _exact(b)
+    fa, fb = exact_fraction(a), exact_fraction(b)
     for n in range(want, 0, -1):
         sa = round_significant(fa, n)
         if sa == round_significant(fb, n):
@@ -255,7 +255,7 @@ def _agreed(a, b, want: int) -> tuple[str, int]:
 
 
 def _agreed_to(v, n: int) -> str:
-    return "0" if v == 0 else round_significant(_exact(v), n)
+    return "0" if v == 0 else round_significant(exact_fraction(v), n)
 
 
 def _as_real(v):

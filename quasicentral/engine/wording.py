@@ -70,13 +70,14 @@ def _points(f, s, lang) -> str:
 
 
 def _agrees_en(f, s) -> str:
-    return (f"agrees at {_points(f, s, 'en')} points to {f.digits}+ digits ({f.confirmed} of them also at "
-            f"{f.top} digits)" + (" (both sides vanish at every point)" if f.vacuous else ""))
+    also = f"also at {f.top} digits" if f.confirmed == f.n == 1 else f"{f.confirmed} of them also at {f.top} digits"
+    return (f"agrees at {_points(f, s, 'en')} point{'' if f.n == 1 else 's'} to {f.digits}+ digits ({also})" + (" (both sides vanish at every point)" if f.vacuous else ""))
 
 
 def _agrees_cs(f, s) -> str:
-    return (f"souhlasí v {_points(f, s, 'cs')} bodech na {f.digits} a více platných číslic ({f.confirmed} z nich "
-            f"také na {f.top} číslic)" + (" (obě strany ve všech bodech vymizí)" if f.vacuous else ""))
+    also = f"také na {f.top} číslic" if f.confirmed == f.n == 1 else f"{f.confirmed} z nich také na {f.top} číslic"
+    return (f"souhlasí v {_points(f, s, 'cs')} {'bodě' if f.n == 1 else 'bodech'} na {f.digits} a více platných číslic "
+            f"({also})" + (" (obě strany ve všech bodech vymizí)" if f.vacuous else ""))
 
 
 def _numbers_en(f, s) -> str:
@@ -105,8 +106,10 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "en": lambda f, s: "sympy proves the difference zero; " + f.sub("numbers"),
         "cs": lambda f, s: "sympy dokazuje, že rozdíl je nulový; " + f.sub("numbers")},
     Code.ROUNDS_TO: {
-        "en": lambda f, s: f"the exact value {s.decimal(f.value)} rounds to the {f.digits} printed digits",
-        "cs": lambda f, s: f"přesná hodnota {s.decimal(f.value)} se zaokrouhlí na {f.digits} vytištěných číslic"},
+        "en": lambda f, s: (f"the exact value {s.decimal(f.value)} rounds to the printed {s.decimal(f.printed)} "
+                            f"({f.places} decimal places)"),
+        "cs": lambda f, s: (f"přesná hodnota {s.decimal(f.value)} se zaokrouhlí na vytištěné {s.decimal(f.printed)} "
+                            f"({f.places} desetinných míst)")},
     Code.HOLDS: {
         "en": lambda f, s: f"holds at {_points(f, s, 'en')} points ({f.top} digits)",
         "cs": lambda f, s: f"platí v {_points(f, s, 'cs')} bodech ({f.top} číslic)"},
@@ -116,10 +119,12 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "cs": lambda f, s: ("sympy nachází limitu " if f.how == "sympy" else "posloupnost konverguje k ")
         + s.expr(f.value)},
     Code.DISAGREES: {
-        "en": lambda f, s: f"{f.count} of {f.points} points disagree (largest relative difference "
-                           f"{s.num(f.relative, '.3g')})",
-        "cs": lambda f, s: f"{f.count} z {f.points} bodů nesouhlasí (největší relativní rozdíl "
-                           f"{s.num(f.relative, '.3g')})"},
+        "en": lambda f, s: (f"{f.count} of {f.points} points disagree (largest relative difference "
+                            if f.points != 1 else "disagrees at its one point (relative difference ")
+                           + f"{s.num(f.relative, '.3g')})",
+        "cs": lambda f, s: (f"{f.count} z {f.points} bodů nesouhlasí (největší relativní rozdíl "
+                            if f.points != 1 else "nesouhlasí ve svém jediném bodě (relativní rozdíl ")
+                           + f"{s.num(f.relative, '.3g')})"},
     Code.FAILS_AT: {
         "en": lambda f, s: f"fails at {f.count} of {f.points} points",
         "cs": lambda f, s: f"neplatí v {f.count} z {f.points} bodů"},
@@ -141,9 +146,24 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "cs": lambda f, s: "rozměrově nekonzistentní" + _numbers_cs(f, s)},
     Code.ROUNDS_OTHERWISE: {
         "en": lambda f, s: (f"the exact value {s.decimal(f.exact)} does not round to the printed "
-                            f"{s.decimal(f.printed)} ({f.digits} digits)"),
+                            f"{s.decimal(f.printed)} ({f.places} decimal places)"),
         "cs": lambda f, s: (f"přesná hodnota {s.decimal(f.exact)} se nezaokrouhlí na vytištěné "
-                            f"{s.decimal(f.printed)} ({f.digits} číslic)")},
+                            f"{s.decimal(f.printed)} ({f.places} desetinných míst)")},
+    Code.ROUNDING_FREE: {
+        "en": lambda f, s: (f"a printed rounding of a value that depends on {', '.join(map(s.expr, f.symbols))}: "
+                            "only a number rounds"),
+        "cs": lambda f, s: (f"vytištěné zaokrouhlení hodnoty, která závisí na {', '.join(map(s.expr, f.symbols))}: "
+                            "zaokrouhlit lze jen číslo")},
+    Code.ROUNDING_TIE: {
+        "en": lambda f, s: (f"the exact value lies on the half of the last printed place of {s.decimal(f.printed)}: "
+                            "either rounding is right"),
+        "cs": lambda f, s: (f"přesná hodnota leží na polovině posledního vytištěného místa čísla {s.decimal(f.printed)}: "
+                            "správné je obojí zaokrouhlení")},
+    Code.ROUNDING_UNDECIDED: {
+        "en": lambda f, s: (f"no precision tried decides whether the value rounds to {s.decimal(f.printed)} "
+                            f"({f.places} decimal places)"),
+        "cs": lambda f, s: (f"žádná vyzkoušená přesnost nerozhodne, zda se hodnota zaokrouhlí na {s.decimal(f.printed)} "
+                            f"({f.places} desetinných míst)")},
     Code.NOTHING_TO_CHECK: {"en": lambda f, s: "nothing to check", "cs": lambda f, s: "není co ověřit"},
     Code.NO_DERIVATION: {
         "en": lambda f, s: "no derivation registered for this entry yet",
@@ -214,6 +234,11 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                             "too few where it holds"),
         "cs": lambda f, s: (f"podmínku šlo vyřešit vzhledem k {s.expr(f.unknown)} jen v {f.count} bodech: "
                             "příliš málo bodů, kde platí")},
+    Code.CONDITION_UNKNOWN: {
+        "en": lambda f, s: ("an implicit condition in " + (", ".join(map(s.expr, f.symbols)) or "no symbol")
+                            + ": the derivation's unknowns=(…) names the one it is solved for"),
+        "cs": lambda f, s: ("implicitní podmínka v " + (", ".join(map(s.expr, f.symbols)) or "žádném symbolu")
+                            + ": proměnnou, vůči níž se řeší, udává unknowns=(…) odvození")},
     Code.ASYMPTOTIC_WITHOUT_LIMIT: {
         "en": lambda f, s: "an asymptotic form (an O-term) without a stated limit: nothing to evaluate",
         "cs": lambda f, s: "asymptotický tvar (člen O) bez udané limity: není co vyčíslit"},
@@ -281,6 +306,8 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                       "cs": lambda f, s: "rozdíl stran na odvozeném řešení"},
     Code.Q_EXPRESSION: {"en": lambda f, s: "expression on the derived solution",
                         "cs": lambda f, s: "výraz na odvozeném řešení"},
+    Code.Q_ROUNDING: {"en": lambda f, s: "the printed decimal and the exact value",
+                      "cs": lambda f, s: "vytištěné desetinné číslo a přesná hodnota"},
     Code.Q_UNDER_CONDITION: {"en": lambda f, s: f"{s.expr(f.quantity)} under the condition",
                              "cs": lambda f, s: f"{s.expr(f.quantity)} při dané podmínce"},
     Code.Q_PRINTED_RESIDUAL: {

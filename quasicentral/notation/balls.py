@@ -106,6 +106,8 @@ def _acb_exact(val: sp.Expr, work: Work):
     import flint
 
     val = sp.nsimplify(val) if not val.is_number else val
+    if val.is_Float:  # a binary number (a root found to many digits): its exact value
+        val = sp.Rational(val)
     if val.is_Rational:
         return flint.acb(flint.arb(flint.fmpq(int(val.p), int(val.q))))
     # exact expressions of pi, sqrt, … : evaluate rigorously through the same compiler
@@ -196,6 +198,9 @@ class _Source:
             if q == 1 and abs(p) < _EXACT_INTEGER:
                 return f"acb({p})"
             return f"acb(arb({self.constant(flint.fmpq(p, q))}))"  # exact; not as text (4300-digit limit)
+        if e.is_Float:  # exactly the binary number it is
+            r = sp.Rational(e)
+            return f"acb(arb({self.constant(flint.fmpq(int(r.p), int(r.q)))}))"
         if e is sp.pi:
             return "acb(arb.pi())"
         if e is sp.E:

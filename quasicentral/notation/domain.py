@@ -372,3 +372,71 @@ def _sampling_order(symbols, ranges, defs) -> list[sp.Symbol]:
     for sym in sorted(symbols, key=str):
         visit(sym)
     return needed
+
+
+#: points of an unknown's range where an implicit condition is evaluated in search of a sign change
+IMPLICIT_GRID = 64
+#: digits a root of an implicit condition is found to (and kept with)
+IMPLICIT_DPS = 90
+
+
+def on_condition(points: list[dict], unknown: sp.Symbol, condition: sp.Expr, ranges: dict) -> list[dict]:
+    """The points with ``unknown`` replaced by a root of ``condition`` = 0 in its range, the
+    other symbols as drawn — the root nearest the drawn value, so that the points cover every
+    root; a point where the condition has none in the range drops out.  Roots are bracketed by
+    the sign changes of the real condition on a grid of :data:`IMPLICIT_GRID` points and refined
+    by mpmath's ``findroot`` (Anderson–Björck) to :data:`IMPLICIT_DPS` digits; where the grid
+    shows none (a double root, a complex condition), the secant method from the drawn value,
+    accepted only inside the range and where the condition vanishes to those digits."""
+    others = tuple(sorted(condition.free_symbols - {unknown}, key=str))
+    f = mp_lambdify((unknown, *others), condition)
+    lo_e, hi_e = (sp.sympify(e) for e in ranges[unknown])
+    out = []
+    for pt in points:
+        with mpmath.workdps(IMPLICIT_DPS):
+            try:
+                root = _root(f, pt, unknown, others, lo_e, hi_e)
+            except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError,
+                    mpmath.libmp.NoConvergence):
+                root = None
+            if root is not None:
+                out.append({**pt, unknown: sp.Float(mpmath.nstr(root, IMPLICIT_DPS - 10), IMPLICIT_DPS - 10)})
+    return out
+
+
+def _root(f, pt: dict, unknown, others: tuple, lo_e, hi_e):
+    vals = [_mp(pt[s]) for s in others]
+    lo, hi = (_mp(e.xreplace(pt)) for e in (lo_e, hi_e))
+    lo, hi = mpmath.re(lo), mpmath.re(hi)
+    if not (mpmath.isfinite(lo) and mpmath.isfinite(hi)) or not lo < hi:
+        return None
+    g = lambda u: f(u, *vals)  # noqa: E731
+    tiny = mpmath.mpf(10) ** (-IMPLICIT_DPS // 2)
+    grid = [lo + (hi - lo) * i / (IMPLICIT_GRID - 1) for i in range(IMPLICIT_GRID)]
+    values = []
+    for u in grid:
+        try:
+            v = g(u)
+        except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError):
+            v = None
+        values.append(mpmath.re(v) if v is not None and mpmath.isfinite(v) and abs(mpmath.im(v)) <= tiny * (1 + abs(v))
+                      else None)
+    size = max([abs(v) for v in values if v is not None] or [mpmath.mpf(1)])
+    roots = []
+    for (a, va), (b, vb) in zip(zip(grid, values), zip(grid[1:], values[1:])):
+        if va is None or vb is None:
+            continue
+        if va == 0:
+            roots.append(a)
+        elif va * vb < 0:
+            r = mpmath.findroot(g, (a, b), solver="anderson")
+            if a <= mpmath.re(r) <= b:
+                roots.append(mpmath.re(r))
+    if values[-1] == 0:
+        roots.append(grid[-1])
+    drawn = _mp(pt[unknown]) if unknown in pt else (lo + hi) / 2
+    if not roots:
+        r = mpmath.findroot(g, mpmath.re(drawn), solver="secant")
+        if mpmath.im(r) == 0 and lo <= r <= hi and abs(g(r)) <= tiny * size:
+            roots.append(mpmath.re(r))
+    return min(roots, key=lambda r: abs(r - mpmath.re(drawn))) if roots else None

@@ -223,8 +223,11 @@ class SymbolTable:
             raise AttributeError(f"no symbol {name!r} is declared")
         return spec.obj
 
-    def __call__(self, names: str) -> tuple:
-        return tuple(getattr(self, n) for n in names.replace(",", " ").split())
+    def __call__(self, names: str):
+        """The symbols named, as sympy's ``symbols`` gives them: one name its symbol, several
+        (or one with a trailing comma) a tuple."""
+        found = tuple(getattr(self, n) for n in names.replace(",", " ").split())
+        return found[0] if len(found) == 1 and "," not in names else found
 
     def __contains__(self, name: str) -> bool:
         return name in self.by_name

@@ -264,6 +264,22 @@ class _Builder:
             _fail(node, f"{name}(…): {type(exc).__name__}: {exc}"[:300])
 
 
+def decimal_literals(text: str) -> dict:
+    """The decimal literals a transcription prints, each as its exact rational and the decimal
+    places printed (``Eq(x, 0.6850858166)`` → {0.6850858166: 10}); its syntax is read, nothing
+    is evaluated (an unreadable text has none)."""
+    try:
+        tree = _tree(text)
+    except TranscriptionError:
+        return {}
+    source, out = text.strip(), {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Constant) and isinstance(node.value, float):
+            literal = ast.get_source_segment(source, node) or repr(node.value)
+            out.setdefault(decimal_literal(literal), decimal_places(literal))
+    return out
+
+
 def decimal_literal(text: str) -> sp.Rational:
     """The exact rational a decimal literal writes: '0.1' → 1/10, '1e-3' → 1/1000."""
     f = Fraction(text.replace("_", ""))

@@ -1,0 +1,88 @@
+"""Issue 25's constructs end to end on a text nobody wrote for the checker (tests/data/wien):
+an implicit condition sampled only where it holds, printed roundings decided by the exact value,
+an integral to infinity, a limit, a coefficient in front of a logarithm."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import mpmath
+import pytest
+import sympy as sp
+
+import quasicentral as qc
+from quasicentral.engine import rounding
+from quasicentral.engine.options import Options
+from quasicentral.engine.reasons import Code
+from quasicentral.engine.verdict import Inconclusive, Refuted, Status, Verified
+from quasicentral.notation.domain import on_condition
+from quasicentral.notation.symbols import Approx
+
+WIEN = Path(__file__).resolve().parent / "data" / "wien"
+
+
+@pytest.fixture(scope="module")
+def results():
+    return qc.load_text(WIEN).verify(cache=False)
+
+
+def test_the_text_verifies(results):
+    assert results.ok
+    assert {r.entry.id: r.status for r in results} == {
+        "wien:1": Status.VERIFIED, "wien:2": Status.ERRATUM, "wien:3": Status.VERIFIED, "wien:4": Status.ERRATUM,
+        "wien:5": Status.VERIFIED, "wien:6": Status.VERIFIED, "wien:7": Status.VERIFIED}
+
+
+def test_the_witness_of_an_implicit_condition_satisfies_it(results):
+    """The refuted peak condition's witness lies where the *printed* condition holds: no witness
+    violates its premise."""
+    w = results["wien:2"].witness
+    assert w.certified
+    with mpmath.workdps(60):
+        x = mpmath.mpf(w.parameters["x"])
+        assert abs((x - 4) * mpmath.exp(x) + 5) < mpmath.mpf(10) ** -50
+        assert abs(5 * x**4 * (mpmath.exp(x) - 1) - x**5 * mpmath.exp(x)) > 1  # and the derivative does not vanish
+
+
+def test_a_root_is_found_in_its_range_nearest_the_drawn_value():
+    x, y = sp.symbols("x y", positive=True)
+    got = on_condition([{x: sp.Integer(7), y: sp.Integer(2)}], x, x**2 - y, {x: (sp.Integer(0), y)})
+    assert abs(got[0][x] - sp.sqrt(2)) < sp.Float("1e-70")
+    both = on_condition([{x: sp.Rational(1, 10)}, {x: sp.Integer(9)}], x, (x - 1) * (x - 8), {x: (0, 10)})
+    assert [round(float(p[x])) for p in both] == [1, 8]
+    assert on_condition([{x: sp.Integer(3)}], x, x**2 + 1, {x: (0, 10)}) == []
+
+
+@pytest.mark.parametrize("expr,printed,expected", [
+    (sp.pi, "3.1416", Code.ROUNDS_TO),
+    (sp.pi, "3.1415", Code.ROUNDS_OTHERWISE),  # a truncation is not a rounding
+    (sp.Rational(1, 3), "0.333", Code.ROUNDS_TO),
+    (sp.Rational(1, 8), "0.12", Code.ROUNDING_TIE),  # 0.125: on the half of the last place
+    (sp.Rational(1, 8), "0.125", Code.ROUNDS_TO),
+    (sp.zeta(3), "1.2020569031595942854", Code.ROUNDS_TO),
+    (sp.EulerGamma, "0.5772156649", Code.ROUNDS_TO),  # no ball form: mpmath at two precisions
+    (sp.sqrt(2) * 1000, "1414.21", Code.ROUNDS_TO),
+    (-sp.E, "-2.718", Code.ROUNDS_TO),
+    (sp.Symbol("a"), "1.5", Code.ROUNDING_FREE),
+])
+def test_a_rounding_is_decided_by_the_exact_value(expr, printed, expected):
+    from quasicentral.notation.transcription import decimal_literal, decimal_places
+
+    v = rounding.check(Approx(expr, decimal_literal(printed), decimal_places(printed)), {}, Options())
+    assert v.reason.code is expected
+    kind = {Code.ROUNDS_TO: Verified, Code.ROUNDS_OTHERWISE: Refuted}.get(expected, Inconclusive)
+    assert isinstance(v, kind)
+    if isinstance(v, Refuted):
+        assert Fraction(v.witness.corrected) != Fraction(printed)
+
+
+def test_an_equation_with_a_decimal_side_is_a_rounding_in_an_identity_text():
+    from quasicentral.engine.catalog import Entry, _as_rounding  # noqa: PLC2701 - the module's own rule, tested
+
+    x = sp.Symbol("x")
+    rel = sp.Eq(sp.zeta(3), sp.Rational(1202, 1000), evaluate=False)
+    got = _as_rounding(rel, {sp.Rational(1202, 1000): 3})
+    assert isinstance(got, Approx) and got.args[2] == 3
+    assert _as_rounding(sp.Eq(x, sp.Rational(1, 2), evaluate=False), {}) == sp.Eq(x, sp.Rational(1, 2), evaluate=False)
+    assert Entry  # the entry applies it only where its text is an identity text (run.py)
