@@ -948,7 +948,9 @@ _SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"
 _TEST_REFERENCE = re.compile(
     r"\s*\((?:[^()]|\([^()]*\))*?(?:\btests?\b/|\btest_\w+|\w+\.py\b|\btests\)|\(tests\b)(?:[^()]|\([^()]*\))*\)"
     r"|\s*\(tests?\)")
-_IDENT_IN_PARENS = re.compile(r"\s*\(\s*[A-Za-z]+_[A-Za-z0-9_]+\s*\)")
+#: a code name in parentheses after a space, ``(legendre_antiderivative)`` — not the argument
+#: of a function, ``y(t_v)``, which follows its name directly
+_IDENT_IN_PARENS = re.compile(r"(?:(?<=\s)|^)\(\s*[A-Za-z]+_[A-Za-z0-9_]+\s*\)|\s+\(\s*[A-Za-z]+_[A-Za-z0-9_]+\s*\)")
 
 
 def clean_prose(s: str) -> str:
@@ -962,10 +964,15 @@ def clean_prose(s: str) -> str:
     'R₀ = v₀ at Ω t = 2 π'
     >>> clean_prose("elliptic_k(m) (legendre_antiderivative) and phi0")
     'K(m) and φ₀'
+    >>> print(clean_prose("h = y(t_v), x'' = a with x'(0) = v0, the 'free' fall"))
+    h = y(t_v), x′′ = a with x′(0) = v₀, the ‘free’ fall
     """
     s = _TEST_REFERENCE.sub("", s)
     s = re.sub(r'"([^"]+)"', "\u201c\\1\u201d", s)  # straight quotes become typographic ones
-    s = re.sub(r"(?<![A-Za-z0-9])'([^'\n]+?)'(?![A-Za-z0-9])", "\u2018\\1\u2019", s)
+    # single quotes around words, never the primes of a derivative (x'' = a, x'(0) = v0)
+    s = re.sub(r"(?<![A-Za-z0-9'])'(?=[^\s'])([^'\n]+?)(?<=\S)'(?![A-Za-z0-9'(])", "\u2018\\1\u2019", s)
+    # the primes of a one-letter symbol (x'' = a, x'(0)), never an apostrophe (Newton's)
+    s = re.sub(r"(?<![A-Za-zα-ωΑ-Ω])([A-Za-zα-ωΑ-Ω])('+)(?![A-Za-z])", lambda m: m.group(1) + "′" * len(m.group(2)), s)
     s = _IDENT_IN_PARENS.sub("", s)
     s = re.sub(r"\btests?/[\w/]+\.py\b", "the tests", s)
     s = re.sub(r"\btest_\w+", "a test", s)
