@@ -136,11 +136,24 @@ DETAIL_WIDTH = 70  # characters of the table's detail column
 
 
 def _shortened(text: str, width: int = DETAIL_WIDTH) -> str:
-    """``text`` cut at a word boundary to ``width`` characters, an ellipsis saying so."""
+    """``text`` cut at a word boundary to ``width`` characters, an ellipsis saying so — before
+    a parenthesis the cut would leave open (a remark is left out whole, not halved).
+
+    >>> _shortened("agrees at 20 points to 18+ digits (4 of them also at 60 digits)", 50)
+    'agrees at 20 points to 18+ digits…'
+    """
     if len(text) <= width:
         return text
-    cut = text[:width - 1].rsplit(" ", 1)[0].rstrip(" ,;:(")
-    return cut + "…"
+    cut = text[:width - 1].rsplit(" ", 1)[0]
+    depth, opened = 0, None
+    for i, c in enumerate(cut):
+        if c == "(":
+            depth, opened = depth + 1, i if depth == 0 else opened
+        elif c == ")" and depth:
+            depth -= 1
+    if depth and opened and opened > width // 3:
+        cut = cut[:opened]
+    return cut.rstrip(" ,;:(") + "…"
 
 
 def _table_detail(r: dict) -> str:
