@@ -139,7 +139,9 @@ def test_a_printed_equation_is_kept_as_printed_and_decided_only_where_the_compar
 
     read = TABLE.parse("Eq(t, t)")
     assert isinstance(read, sp.Eq) and read.lhs == read.rhs
-    assert decided(read) is sp.true and decided(TABLE.parse("Eq(2, 3)")) is sp.false
+    assert decided(read) is sp.true
+    # two numbers sympy finds unequal are left to the numbers, which refute them with a witness
+    assert decided(TABLE.parse("Eq(2, 3)")) == TABLE.parse("Eq(2, 3)")
     assert decided(TABLE.parse("Eq(l, g*t**2)")) == sp.Eq(l, g * t**2)
     assert decided(TABLE.parse("Eq(sqrt(4), 2)")) is sp.true
 

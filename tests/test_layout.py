@@ -18,7 +18,7 @@ LAYERS = {
     "quasicentral.engine": 2, "quasicentral.models": 2,
     "quasicentral.studies": 3,
     "quasicentral.documents": 4,
-    "quasicentral.api": 5, "quasicentral.cli": 5,
+    "quasicentral.api": 5, "quasicentral.cli": 5, "quasicentral.pytest_plugin": 6,
 }
 
 
@@ -102,3 +102,39 @@ def test_no_module_names_a_shipped_text(module, path):
             assert not SHIPPED.search(node.value), f"{module}:{node.lineno} names a shipped text: {node.value[:60]!r}"
         if isinstance(node, ast.Name) and "brepta" in node.id.lower():
             raise AssertionError(f"{module}:{node.lineno} names a shipped text: {node.id}")
+
+
+#: the layers that hold no module-level mutable state (issue 26): their tables are read-only
+STATELESS = ("quasicentral.notation", "quasicentral.engine", "quasicentral.documents")
+_MUTABLE_CALLS = {"dict", "list", "set", "defaultdict", "OrderedDict", "Counter", "deque", "bytearray"}
+
+
+def _mutable(value: ast.AST) -> bool:
+    """A module-level value a caller could change in place: a dict, list or set display or
+    comprehension, a call of their constructors, or an operation on one (``{...} | {...}``)."""
+    if isinstance(value, (ast.Dict, ast.List, ast.Set, ast.DictComp, ast.ListComp, ast.SetComp)):
+        return True
+    if isinstance(value, ast.Call):
+        return isinstance(value.func, ast.Name) and value.func.id in _MUTABLE_CALLS
+    if isinstance(value, ast.BinOp):
+        return _mutable(value.left) or _mutable(value.right)
+    return False
+
+
+@pytest.mark.parametrize("module,path", [(m, p) for m, p in MODULES if m.startswith(STATELESS)],
+                         ids=[m for m, _ in MODULES if m.startswith(STATELESS)])
+def test_no_module_level_mutable_state(module, path):
+    """State lives in a workspace object: a module's tables are MappingProxyType, frozenset or
+    tuple, and nothing at module level changes one in place (a test never needs a reset)."""
+    tree = ast.parse(path.read_text())
+    for node in tree.body:
+        if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None:
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            names = [t.id for t in targets if isinstance(t, ast.Name)]
+            assert not (names and names != ["__all__"] and _mutable(node.value)), \
+                f"{module}:{node.lineno}: {names[0]} is a mutable module-level value (freeze it)"
+            assert not any(isinstance(t, ast.Subscript) for t in targets), \
+                f"{module}:{node.lineno}: a module-level table changed in place"
+        if isinstance(node, ast.Expr) and isinstance(node.value, ast.Call) and isinstance(node.value.func, ast.Attribute) \
+                and node.value.func.attr in ("update", "append", "extend", "add", "setdefault", "insert", "clear", "pop"):
+            raise AssertionError(f"{module}:{node.lineno}: a module-level table changed in place")

@@ -485,7 +485,7 @@ def test_no_module_of_documents_names_a_shipped_text():
     ("R0 = v0 at Omega t = 2 pi (tests/test_a.py)", "R₀ = v₀ at Ω t = 2 π"),
     ("see test_sign_of_the_F_terms_is_right", "see a test"),
     ("elliptic_k(m) (legendre_antiderivative)", "K(m)"),
-    ("the suspicion 'exponents 3/4' and \"α = 0\", Newton's C'", "the suspicion ‘exponents 3/4’ and “α = 0”, Newton's C'"),
+    ("the suspicion 'exponents 3/4' and \"α = 0\", Newton's C'", "the suspicion ‘exponents 3/4’ and “α = 0”, Newton's C′"),
 ])
 def test_clean_prose(raw, clean):
     from quasicentral.documents.latex import clean_prose

@@ -86,3 +86,22 @@ def test_an_equation_with_a_decimal_side_is_a_rounding_in_an_identity_text():
     assert isinstance(got, Approx) and got.args[2] == 3
     assert _as_rounding(sp.Eq(x, sp.Rational(1, 2), evaluate=False), {}) == sp.Eq(x, sp.Rational(1, 2), evaluate=False)
     assert Entry  # the entry applies it only where its text is an identity text (run.py)
+
+
+def test_every_reason_has_every_language():
+    from quasicentral.engine.reasons import Code as C
+    from quasicentral.engine.wording import LANGUAGES, WORDING
+
+    missing = [(c.value, lang) for c in C for lang in LANGUAGES if lang not in WORDING.get(c, {})]
+    assert not missing, missing
+
+
+def test_the_reasons_of_a_run_read_in_both_languages(results):
+    from quasicentral.engine.wording import render
+
+    for r in results:
+        v = r.outcome.verdict
+        en, cs = render(v.reason, "en"), render(v.reason, "cs")
+        assert en and cs and en != cs, (r.entry.id, en, cs)
+        if r.witness is not None and r.witness.quantity is not None:
+            assert render(r.witness.quantity, "en") != render(r.witness.quantity, "cs")

@@ -4,6 +4,7 @@ engine's reasons rendered per language (from the wording table, typed: no senten
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import re
 import sys
 
@@ -25,7 +26,7 @@ VERSIONS_FILE = "versions.tex"
 PACKAGES = (("sympy", "sympy"), ("mpmath", "mpmath"), ("numpy", "numpy"), ("scipy", "scipy"),
             ("python-flint", "flint"), ("matplotlib", "matplotlib"))
 #: pdflang of each language.
-PDFLANG = {"en": "en-GB", "cs": "cs-CZ"}
+PDFLANG = MappingProxyType({"en": "en-GB", "cs": "cs-CZ"})
 
 
 # --- versions --------------------------------------------------------------------------------
@@ -89,8 +90,8 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
   pdflang={%(pdflang)s}, pdfcreator={quasicentral}}
 """
 
-_PLAIN_MATH = {v.strip(): k for k, v in MATH_CHARS.items() if v.startswith("\\") and len(k) == 1}
-_PLAIN_MATH.update({r"\varrho": "ϱ", r"\varphi": "φ", r"\to": "→", r"\sqrt": "√", r"\dot": "", r"\ldots": "…"})
+_PLAIN_MATH = MappingProxyType({v.strip(): k for k, v in MATH_CHARS.items() if v.startswith("\\") and len(k) == 1}
+                               | {r"\varrho": "ϱ", r"\varphi": "φ", r"\to": "→", r"\sqrt": "√", r"\dot": "", r"\ldots": "…"})
 _SUP = str.maketrans("0123456789+-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻")
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -296,8 +297,8 @@ def detail_text(reason, lang: str) -> str:
     return text(render(reason, lang)) if reason is not None else ""
 
 
-_DIM_NAMES = {DIM_L: r"\mathsf{L}", DIM_T: r"\mathsf{T}", DIM_M: r"\mathsf{M}", DIM_THETA: r"\Theta",
-              DIM_I: r"\mathsf{I}", DIM_N: r"\mathsf{N}", DIM_J: r"\mathsf{J}"}
+_DIM_NAMES = MappingProxyType({DIM_L: r"\mathsf{L}", DIM_T: r"\mathsf{T}", DIM_M: r"\mathsf{M}", DIM_THETA: r"\Theta",
+              DIM_I: r"\mathsf{I}", DIM_N: r"\mathsf{N}", DIM_J: r"\mathsf{J}"})
 
 
 def dim_latex(d: str) -> str:

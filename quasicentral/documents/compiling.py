@@ -4,6 +4,7 @@ failed job's auxiliary files removed so that the next run starts clean.
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import os
 import re
 import shutil
@@ -46,7 +47,7 @@ def log_problems(log_text: str) -> list[str]:
 
 #: TeX's own file access for a document built from a folder someone sent: it may read and write
 #: only inside its build folder (paranoid), and run no program
-SANDBOX = {"openin_any": "p", "openout_any": "p", "shell_escape": "f"}
+SANDBOX = MappingProxyType({"openin_any": "p", "openout_any": "p", "shell_escape": "f"})
 
 
 def compile_one(out: Path, name: str) -> Path:

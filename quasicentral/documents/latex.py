@@ -31,6 +31,7 @@ Rendering is separate from derivation (sympy's ``LatexPrinter`` subclassed, as
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import re
 import unicodedata
 from contextlib import contextmanager
@@ -85,9 +86,9 @@ def notation() -> Notation:
 
 #: sympy functions defined by the derivations, by class name -> LaTeX (a text adds its own: the
 #: ``[notation] functions`` of its report.toml, passed to the printer as ``function_names``).
-NAMED_FUNCTIONS: dict[str, str] = {}
+NAMED_FUNCTIONS: dict[str, str] = MappingProxyType({})
 
-_DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
+_DOTS = MappingProxyType({1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"})
 
 
 class _Arccotg(sp.Function):
@@ -304,9 +305,9 @@ _BREAK = "\x00"
 
 
 #: Commands typeset as words (their width is their length); others count as one glyph.
-_WORDS_WIDE = {"sin", "cos", "tan", "cot", "ln", "log", "exp", "arccotg", "arcsin", "arccos", "arctan",
-               "operatorname", "text", "lfloor", "rfloor"}
-_SPACES = {"quad": 2.0, "qquad": 4.0, ",": 0.3, ";": 0.5, ":": 0.4, "!": 0.0, " ": 0.4}
+_WORDS_WIDE = frozenset({"sin", "cos", "tan", "cot", "ln", "log", "exp", "arccotg", "arcsin", "arccos", "arctan",
+               "operatorname", "text", "lfloor", "rfloor"})
+_SPACES = MappingProxyType({"quad": 2.0, "qquad": 4.0, ",": 0.3, ";": 0.5, ":": 0.4, "!": 0.0, " ": 0.4})
 
 
 def visible_width(tex: str) -> float:
@@ -472,7 +473,7 @@ def relation_lines(rel, width: int = 70, names: dict[str, str] | None = None,
 # --- prose: Unicode mathematics to LaTeX -------------------------------------------------------
 
 #: One table: a character of prose and its LaTeX in math mode (None: text-mode replacement below).
-MATH_CHARS = {
+MATH_CHARS = MappingProxyType({
     "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon", "ζ": r"\zeta",
     "η": r"\eta", "θ": r"\theta", "ϑ": r"\vartheta", "κ": r"\kappa", "λ": r"\lambda", "μ": r"\mu",
     "ν": r"\nu", "ξ": r"\xi", "π": r"\pi", "ρ": r"\varrho", "ϱ": r"\varrho", "σ": r"\sigma",
@@ -488,18 +489,18 @@ MATH_CHARS = {
     "¼": r"\tfrac{1}{4}", "¾": r"\tfrac{3}{4}", "°": r"^{\circ}", "′": r"'", "ℓ": r"\ell",
     "ṙ": r"\dot{r}", "ẋ": r"\dot{x}", "ẍ": r"\ddot{x}", "ẏ": r"\dot{y}", "ÿ": r"\ddot{y}",
     "ż": r"\dot{z}",
-}
-SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ⁿⁱ", "0123456789+-ni"))
-SUBSCRIPTS = dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋ₙₘₖ", "0123456789+-nmk"))
-COMBINING = {"\u0307": r"\dot", "\u0308": r"\ddot", "\u0302": r"\hat", "\u0304": r"\bar", "\u20d7": r"\vec"}
+})
+SUPERSCRIPTS = MappingProxyType(dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ⁿⁱ", "0123456789+-ni")))
+SUBSCRIPTS = MappingProxyType(dict(zip("₀₁₂₃₄₅₆₇₈₉₊₋ₙₘₖ", "0123456789+-nmk")))
+COMBINING = MappingProxyType({"\u0307": r"\dot", "\u0308": r"\ddot", "\u0302": r"\hat", "\u0304": r"\bar", "\u20d7": r"\vec"})
 #: Text-mode replacements for characters that are special to TeX or absent from T1 fonts.
-TEXT_CHARS = {
+TEXT_CHARS = MappingProxyType({
     "\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
     "%": r"\%", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "_": r"\_",
     "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}", '"': r"\textquotedbl{}",
     "–": "--", "—": "---", "…": r"\dots{}", "„": r"\quotedblbase{}", "“": r"\textquotedblleft{}",
     "”": r"\textquotedblright{}", "‘": "`", "’": "'", "\u00a0": "~", "\t": " ",
-}
+})
 _WORD = re.compile(r"[A-Za-z]")
 
 
@@ -701,7 +702,7 @@ def with_math(s: str, letters: bool = True) -> str:
     return "".join(text(p, letters) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
 
 
-_NEIGHBOURS = set(" =+-,;:()[]/*<>0123456789")
+_NEIGHBOURS = frozenset(set(" =+-,;:()[]/*<>0123456789"))
 
 
 def _lone_variable(tokens: list[tuple[bool, str]], k: int) -> bool:
@@ -938,12 +939,12 @@ def wrap_row(row: str, width: int = 74) -> str:
 
 
 # --- prose of the derivations and errata, cleaned for a reader ------------------------------------
-_GREEK_WORDS = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "zeta": "ζ", "kappa": "κ",
+_GREEK_WORDS = MappingProxyType({"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "zeta": "ζ", "kappa": "κ",
                 "lambda": "λ", "rho": "ϱ", "psi": "ψ", "phi": "φ", "vphi": "φ", "Omega": "Ω",
-                "omega": "ω", "pi": "π", "theta": "θ", "tau": "τ"}
+                "omega": "ω", "pi": "π", "theta": "θ", "tau": "τ"})
 #: Names of the machinery a reader does not need: what they stand for in the text's notation.
-CODE_NAMES = {"elliptic_k": "K", "elliptic_f": "F", "elliptic_e": "E", "Fj": "F", "Ej": "E", "Kc": "K",
-              "Ec": "E", "asin": "arcsin", "atan2": "arctg", "atan": "arctg", "sqrt": "√"}
+CODE_NAMES = MappingProxyType({"elliptic_k": "K", "elliptic_f": "F", "elliptic_e": "E", "Fj": "F", "Ej": "E", "Kc": "K",
+              "Ec": "E", "asin": "arcsin", "atan2": "arctg", "atan": "arctg", "sqrt": "√"})
 _SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _TEST_REFERENCE = re.compile(
     r"\s*\((?:[^()]|\([^()]*\))*?(?:\btests?\b/|\btest_\w+|\w+\.py\b|\btests\)|\(tests\b)(?:[^()]|\([^()]*\))*\)"

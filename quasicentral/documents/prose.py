@@ -9,6 +9,7 @@ Czech one-letter prepositions are tied to the next word with ``~`` as Czech typo
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import tomllib
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -17,16 +18,16 @@ from pathlib import Path
 LANGS = ("en", "cs")
 
 #: Kinds of errata, in Czech.
-KINDS_CS = {
+KINDS_CS = MappingProxyType({
     "sign": "znaménko", "exponent": "exponent", "wrong variable": "záměna proměnné",
     "missing factor": "chybějící činitel", "limits of integration": "integrační meze",
     "range of validity": "obor platnosti", "OCR glyph": "chybně přepsaný znak",
     "derivative order": "řád derivace", "parenthesis": "závorky", "coefficient": "koeficient",
     "rounding": "zaokrouhlení",
-}
+})
 
 #: Sentences and labels, per language.  ``{refs}`` is a list of equation references.
-WORDS = {
+WORDS = MappingProxyType({
     "en": {
         "and": "and",
         "report": "Derivation and verification report",
@@ -279,7 +280,7 @@ WORDS = {
              "neshoda v~{0} z~{1} bodů (největší relativní rozdíl {2})"),
         ],
     },
-}
+})
 
 
 def join_refs(refs: list[str], lang: str) -> str:
@@ -348,7 +349,7 @@ class TextProse:
 
 
 #: What a text without report.toml is called and told with.
-GENERIC = {
+GENERIC = MappingProxyType({
     "intro": {
         "en": (r"Every equation of the text was derived again with sympy and compared with the print; "
                r"where the print is wrong, the corrected form is shown and the printed one is quoted "
@@ -360,7 +361,7 @@ GENERIC = {
         "en": r"The figures are drawn from the derived closed forms and from the toolkit's measurements.",
         "cs": r"Obrázky jsou sestrojeny z~odvozených vztahů a~z~měření, která provedl program.",
     },
-}
+})
 
 
 def _lang_table(raw, where: str) -> dict[str, str]:

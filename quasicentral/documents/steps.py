@@ -162,8 +162,8 @@ def entry_heading(st: Step, prose: TextProse, lang: str) -> str:
 
 
 _MATH_HEAD = re.compile(r"^(.*?)(?::\s|\.\s*$|$)", re.S)
-_FUNCTION_WORDS = {"sin", "cos", "tg", "cotg", "arccotg", "arctg", "arcsin", "ln", "exp", "dt", "dx", "dy",
-                   "ds", "dz", "konst", "d", "const"}
+_FUNCTION_WORDS = frozenset({"sin", "cos", "tg", "cotg", "arccotg", "arctg", "arcsin", "ln", "exp", "dt", "dx", "dy",
+                   "ds", "dz", "konst", "d", "const"})
 
 
 def _is_formula(s: str) -> bool:

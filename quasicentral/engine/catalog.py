@@ -279,8 +279,8 @@ def _deep_line(text: str, depth_limit: int = 64) -> int:
 
 
 _REQUIRED = ("id", "name", "latex", "printed")
-_KNOWN = set(_REQUIRED) | {"number", "dims", "note", "constraints", "real", "url", "kind", "semantic", "approx",
-                           "rests_on", "defines"}
+_KNOWN = frozenset(set(_REQUIRED) | {"number", "dims", "note", "constraints", "real", "url", "kind", "semantic", "approx",
+                           "rests_on", "defines"})
 KINDS = ("identity", "definition", "inequality", "series", "asymptotic", "notation")
 
 

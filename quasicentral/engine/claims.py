@@ -10,6 +10,7 @@ vanish under the printed condition (``condition``).  :class:`CannotCompare` says
 
 from __future__ import annotations
 
+from types import MappingProxyType
 from dataclasses import dataclass
 
 import sympy as sp
@@ -33,7 +34,7 @@ class Claim:
 
 
 #: the inequalities, each as (is "left ≤ right" rather than "left ≥ right")
-INEQUALITIES = {sp.StrictLessThan: True, sp.LessThan: True, sp.StrictGreaterThan: False, sp.GreaterThan: False}
+INEQUALITIES = MappingProxyType({sp.StrictLessThan: True, sp.LessThan: True, sp.StrictGreaterThan: False, sp.GreaterThan: False})
 
 
 class CannotCompare(Exception):
@@ -68,14 +69,15 @@ def solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
 
 
 def decided(rel: sp.Basic) -> sp.Basic:
-    """A printed equation whose two sides are the same expression (True), or two numbers (sympy
-    decides), as sympy's ``Eq`` would give it; any other relation as it is (a transcription
+    """A printed equation whose two sides are the same expression, or two numbers sympy finds
+    equal (True); any other relation as it is (a transcription
     keeps its equations undecided: :func:`quasicentral.notation.symbols.printed_eq`)."""
     if isinstance(rel, sp.Eq):
         if rel.lhs == rel.rhs:
             return sp.true
-        if rel.lhs.is_number and rel.rhs.is_number:
-            return sp.Eq(rel.lhs, rel.rhs)
+        if rel.lhs.is_number and rel.rhs.is_number and sp.Eq(rel.lhs, rel.rhs) is sp.true:
+            return sp.true
+        # two numbers sympy finds unequal are left to the numbers: a refutation has a witness
     return rel
 
 

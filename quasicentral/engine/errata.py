@@ -192,9 +192,9 @@ def _tables(data: dict, key: str, p: Path) -> list[dict]:
 
 
 #: the keys each table of an errata file may set (and their wording in another language: KEY_<lang>)
-_ALLOWED = {"cause": {"id", "title", "kind", "note"},
+_ALLOWED = MappingProxyType({"cause": {"id", "title", "kind", "note"},
             "erratum": {"id", "kind", "cause", "corrected", "corrected_latex", "note"},
-            "cleared": {"id", "suspicion", "note", "branch"}}
+            "cleared": {"id", "suspicion", "note", "branch"}})
 
 
 def _check_keys(raw: dict, table: str, p: Path, i: int, what: str) -> None:

@@ -233,6 +233,15 @@ def numeric(claim: Claim, domain: Domain, label: str, opts: Options, table: Symb
     """The claim at in-domain points on the ladder: verified, refuted with a witness, or
     inconclusive with the reason."""
     defs = domain.definition_map(table)
+    # a function the text declares is a quantity along its motion (any values: a jet), and so is
+    # one both sides hold (an identity for every function, or a derivation's unknown A′(t)); an
+    # ad-hoc Function('u') on the printed side alone is something the text defines elsewhere:
+    # it has no numbers here
+    declared = {s.obj.func for s in table.specs if s.variables} if table is not None else set()
+    declared |= {f.func for f in claim.derived.atoms(AppliedUndef)}
+    undeclared = sorted({f.func.__name__ for f in claim.printed.atoms(AppliedUndef) if f.func not in declared})
+    if undeclared:
+        return Inconclusive(Method.NONE, Reason.of(Code.NO_NUMERIC_FORM, function=undeclared[0]))
     p, d, scale = prepared(claim.printed, defs), prepared(claim.derived, defs), prepared(claim.scale, defs)
     unknown = sorted({f.func.__name__ for e in (p, d) for f in e.atoms(AppliedUndef)})
     if unknown:  # a function the text names but does not define (a sequence a(n)): no numbers

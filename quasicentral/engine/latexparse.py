@@ -9,6 +9,7 @@ Parsed names are matched to the transcription's symbols by a normalised spelling
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import random
 import re
 import warnings
@@ -21,15 +22,15 @@ from quasicentral.engine.catalog import Entry
 
 BACKENDS = ("antlr", "lark")
 
-_PRE = [
+_PRE = tuple([
     (r"\\doteq", "="), (r"\\varrho", r"\\rho"), (r"\\varphi", r"\\phi"), (r"\\left\.|\\right\.", ""),
     (r"\\,|\\;|\\!|\\quad", " "), (r"\\text\{[^}]*\}", ""), (r"\\emptyset", "0"),
     (r"\\arccotg", r"\\operatorname{acot}"), (r"\\Big|\\big|\\Bigg|\\bigg", ""),
     (r"\\dots|\\ldots|\\cdots", ""), (r"[,.;]\s*$", ""),
-]
+])
 
-_ALIASES = {"varrho": "rho", "varphi": "phi", "vphi": "phi", "w": "psi", "th": "phi", "theta": "phi",
-            "Ro": "R0", "vo": "v0", "varphi0": "phi0", "phi0": "phi0"}
+_ALIASES = MappingProxyType({"varrho": "rho", "varphi": "phi", "vphi": "phi", "w": "psi", "th": "phi", "theta": "phi",
+            "Ro": "R0", "vo": "v0", "varphi0": "phi0", "phi0": "phi0"})
 
 
 def _normal(name: str) -> str:

@@ -9,6 +9,7 @@ per language, its numbers formatted as the language writes them (the JSON docume
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import re
 
 import sympy as sp
@@ -29,14 +30,14 @@ def parameters_text(w, lang: str = "en") -> dict[str, str]:
     return out
 
 
-_SENTENCE = {
+_SENTENCE = MappingProxyType({
     "en": ("at {at} the printed {q} is {p}, the derived {c} (relative difference {r}; {cert})",
            "certified", "not certified",
            "no numeric witness (the printed relation is dimensionally inconsistent)"),
     "cs": ("v bodě {at} je vytištěná hodnota ({q}) {p}, odvozená {c} (relativní rozdíl {r}; {cert})",
            "certifikováno", "necertifikováno",
            "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)"),
-}
+})
 
 
 def witness_sentence(w, lang: str = "en") -> str:

@@ -28,8 +28,9 @@ authors = ["Your Name"]
 year = 2026
 language = "en"
 
-# Each symbol: its LaTeX, its dimension (a monomial in L, T, M), its assumptions, and the range
-# the checker samples it from (or a definition in other symbols instead of a range).
+# Each symbol: its LaTeX, its dimension (a formula in L, T, M, Theta such as "L/T^2", or units by
+# name such as "m/s^2", "J/K"; "1" for none), its assumptions, and the range the checker samples
+# it from (or a definition in other symbols instead of a range).
 [symbols.t]
 meaning = "time"
 latex = 't'

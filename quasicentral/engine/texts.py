@@ -40,8 +40,8 @@ from quasicentral.notation.symbols import SymbolError, SymbolTable, table_from_t
 from quasicentral.notation.timelimit import TimeLimitExceeded
 
 _ID = re.compile(r"[a-z0-9][a-z0-9_-]*\Z")
-_META_KEYS = {"id", "title", "title_en", "authors", "year", "language", "citation", "derivations",
-              "symbols", "functions", "check"}
+_META_KEYS = frozenset({"id", "title", "title_en", "authors", "year", "language", "citation", "derivations",
+              "symbols", "functions", "check"})
 LANGUAGES = ("cs", "en", "de", "fr", "sk", "pl", "it", "es", "ru")
 CHECKS = ("derivation", "identity")  # how a text's entries are checked (text.toml: check)
 

@@ -19,6 +19,7 @@ Combining (LaCASt's rule): refuted beats inconclusive beats verified.
 
 from __future__ import annotations
 
+from types import MappingProxyType
 from dataclasses import dataclass, field, replace
 from enum import Enum
 
@@ -138,7 +139,7 @@ class Inconclusive(Verdict):
     name = "inconclusive"
 
 
-_RANK = {Verified: 0, Inconclusive: 1, Refuted: 2}
+_RANK = MappingProxyType({Verified: 0, Inconclusive: 1, Refuted: 2})
 
 
 def combine(verdicts: list[Verdict]) -> Verdict:

@@ -10,6 +10,7 @@ repeated sub-expression computed once: ~2.5× faster per evaluation than nested 
 
 from __future__ import annotations
 
+from types import MappingProxyType
 from contextlib import contextmanager
 from functools import lru_cache
 
@@ -122,7 +123,7 @@ def ball_function(e: sp.Basic):
     return _compile(e)
 
 
-_UNARY = {  # sympy function -> the acb expression of its argument ``{a}`` (``an``: analytic)
+_UNARY = MappingProxyType({  # sympy function -> the acb expression of its argument ``{a}`` (``an``: analytic)
     sp.sin: "{a}.sin()", sp.cos: "{a}.cos()", sp.tan: "{a}.tan()", sp.exp: "{a}.exp()",
     sp.atan: "{a}.atan()", sp.log: "{a}.log(analytic=an)", sp.asin: "{a}.asin()",
     sp.acos: "{a}.acos()", sp.sinh: "{a}.sinh()", sp.cosh: "{a}.cosh()", sp.acot: "(1 / {a}).atan()",
@@ -140,8 +141,8 @@ _UNARY = {  # sympy function -> the acb expression of its argument ``{a}`` (``an
     sp.Ei: "(acb('nan') if an else {a}.ei())", sp.Ci: "(acb('nan') if an else {a}.ci())",
     sp.Chi: "(acb('nan') if an else {a}.chi())", sp.li: "(acb('nan') if an else {a}.li())",
     sp.LambertW: "(acb('nan') if an else {a}.lambertw())",
-}
-_BINARY = {sp.elliptic_f: "acb.elliptic_f({a}, {b})", sp.elliptic_e: "acb.elliptic_e_inc({a}, {b})"}
+})
+_BINARY = MappingProxyType({sp.elliptic_f: "acb.elliptic_f({a}, {b})", sp.elliptic_e: "acb.elliptic_e_inc({a}, {b})"})
 _EXACT_INTEGER = 2**53  # integers below are exact balls at any working precision (≥ 53 bits) either way
 
 

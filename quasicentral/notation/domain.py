@@ -11,6 +11,7 @@ sympy numbers; they cross to mpmath only in :mod:`quasicentral.bridge`.
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import hashlib
 import random
 from dataclasses import dataclass, field
@@ -143,7 +144,7 @@ def _draw(ranges: tuple, definitions: tuple, constraints: tuple, real: tuple, sy
     return tuple(points)
 
 
-_BOUNDS = {sp.StrictGreaterThan: "lower", sp.GreaterThan: "lower", sp.StrictLessThan: "upper", sp.LessThan: "upper"}
+_BOUNDS = MappingProxyType({sp.StrictGreaterThan: "lower", sp.GreaterThan: "lower", sp.StrictLessThan: "upper", sp.LessThan: "upper"})
 
 
 def narrowed(sym, lo, hi, constraints) -> tuple:
@@ -304,8 +305,8 @@ def _fraction(v: sp.Expr) -> Fraction:
 #: a constraint whose two sides differ by less than this (relative, at 30 digits) is decided exactly
 CONSTRAINT_MARGIN = 1e-20
 #: a relation lhs ∘ rhs decided from the sign of lhs − rhs (far from zero: see CONSTRAINT_MARGIN)
-_SIGN_TEST = {sp.StrictLessThan: lambda d: d < 0, sp.LessThan: lambda d: d <= 0, sp.StrictGreaterThan: lambda d: d > 0,
-              sp.GreaterThan: lambda d: d >= 0, sp.Eq: lambda d: d == 0, sp.Ne: lambda d: d != 0}
+_SIGN_TEST = MappingProxyType({sp.StrictLessThan: lambda d: d < 0, sp.LessThan: lambda d: d <= 0, sp.StrictGreaterThan: lambda d: d > 0,
+              sp.GreaterThan: lambda d: d >= 0, sp.Eq: lambda d: d == 0, sp.Ne: lambda d: d != 0})
 
 
 class _Constraint:

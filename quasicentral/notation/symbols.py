@@ -160,8 +160,8 @@ _SPECIAL = ("factorial", "factorial2", "binomial", "gamma", "loggamma", "lowerga
             "harmonic")
 _FORMS = ("Sum", "Product", "Integral", "Derivative", "Limit", "Subs", "Eq", "Ne", "Lt", "Le",
           "Gt", "Ge", "And", "Or", "Not", "Rational", "Integer", "Tuple")
-_CONSTANTS = {"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "EulerGamma": sp.EulerGamma,
-              "GoldenRatio": sp.GoldenRatio, "Catalan": sp.Catalan}
+_CONSTANTS = MappingProxyType({"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "EulerGamma": sp.EulerGamma,
+              "GoldenRatio": sp.GoldenRatio, "Catalan": sp.Catalan})
 
 #: Functions and constants every transcription may use (a text's symbols come on top): sympy's
 #: own by their sympy names, and the notation's.  Read-only.
@@ -295,8 +295,8 @@ class SymbolTable:
 
 # --- reading a table from text.toml ------------------------------------------------------------
 _IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
-_SYMBOL_KEYS = {"latex", "dimension", "assumptions", "range", "definition", "dots", "meaning"}
-_FUNCTION_KEYS = {"latex", "dimension", "assumptions", "variable", "variables", "meaning"}
+_SYMBOL_KEYS = frozenset({"latex", "dimension", "assumptions", "range", "definition", "dots", "meaning"})
+_FUNCTION_KEYS = frozenset({"latex", "dimension", "assumptions", "variable", "variables", "meaning"})
 
 
 def table_from_toml(data: dict, where: str) -> SymbolTable:

@@ -21,6 +21,7 @@ instead (:class:`quasicentral.notation.bridge.Work`).
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import contextvars
 import signal
 import threading
@@ -39,7 +40,7 @@ CPU, WALL = Clock.CPU, Clock.WALL
 #: block has ended: an exception raised where Python ignores exceptions (a garbage collector's
 #: callback, a finalizer such as the one lambdify registers) would lose the bound
 RETRY_SECONDS = 0.05
-_TIMER = {CPU: (signal.ITIMER_VIRTUAL, signal.SIGVTALRM), WALL: (signal.ITIMER_REAL, signal.SIGALRM)}
+_TIMER = MappingProxyType({CPU: (signal.ITIMER_VIRTUAL, signal.SIGVTALRM), WALL: (signal.ITIMER_REAL, signal.SIGALRM)})
 
 
 def now(clock: Clock) -> float:

@@ -20,6 +20,7 @@ quasicentral.notation.transcription.TranscriptionError: line 1, column 0: attrib
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import ast
 from fractions import Fraction
 
@@ -63,10 +64,10 @@ def _tree(text: str) -> ast.Expression:
     return tree
 
 
-_BINARY = {ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
-           ast.Div: lambda a, b: a / b, ast.Mod: lambda a, b: sp.Mod(a, b)}
-_COMPARE = {ast.Lt: sp.StrictLessThan, ast.LtE: sp.LessThan, ast.Gt: sp.StrictGreaterThan,
-            ast.GtE: sp.GreaterThan, ast.NotEq: sp.Ne}
+_BINARY = MappingProxyType({ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
+           ast.Div: lambda a, b: a / b, ast.Mod: lambda a, b: sp.Mod(a, b)})
+_COMPARE = MappingProxyType({ast.Lt: sp.StrictLessThan, ast.LtE: sp.LessThan, ast.Gt: sp.StrictGreaterThan,
+            ast.GtE: sp.GreaterThan, ast.NotEq: sp.Ne})
 
 
 def check(text: str, names) -> list[str]:

@@ -30,7 +30,7 @@ from .macros import RELATIONS
 from .options import Options, SemanticLatexError
 from .parser import Parser
 
-_SETS = {r"\Reals", r"\Complexes", r"\Integers", r"\NatNumber"}
+_SETS = frozenset({r"\Reals", r"\Complexes", r"\Integers", r"\NatNumber"})
 
 
 @dataclass(frozen=True)

@@ -4,16 +4,17 @@ operators (integrals, sums, products, limits), derivatives, O-terms and the macr
 
 from __future__ import annotations
 
+from types import MappingProxyType
 import re
 
 from . import nodes as N
 from .lexer import Kind, Token
 from .macros import CONSTANTS, GREEK, JACOBI, MACROS
 
-_DELIMS = {"(": ")", "[": "]", "|": "|", ".": None, r"\{": r"\}", r"\|": r"\|", r"\lbrace": r"\rbrace"}
-_OPERATORNAMES = {"sech": "sech", "csch": "csch", "arctan": "atan", "arccos": "acos",
+_DELIMS = MappingProxyType({"(": ")", "[": "]", "|": "|", ".": None, r"\{": r"\}", r"\|": r"\|", r"\lbrace": r"\rbrace"})
+_OPERATORNAMES = MappingProxyType({"sech": "sech", "csch": "csch", "arctan": "atan", "arccos": "acos",
                   "arcsin": "asin", "arctanh": "atanh", "arcsinh": "asinh", "ph": "arg",
-                  "sign": "sign", "gd": "gd"}
+                  "sign": "sign", "gd": "gd"})
 
 
 def atom_command(p, t: Token) -> N.Node:

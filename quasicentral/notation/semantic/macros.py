@@ -17,6 +17,7 @@ R_{−a} as ``CarlsonR(a, Tuple(b…), Tuple(z…))``) and sympy's own.
 
 from __future__ import annotations
 
+from types import MappingProxyType
 from dataclasses import dataclass
 
 
@@ -31,11 +32,11 @@ class Macro:
 
 #: The twelve Jacobian elliptic functions by their two letters.
 JACOBI_LETTERS = ("sn", "cn", "dn", "ns", "nc", "nd", "sc", "sd", "cs", "cd", "ds", "dc")
-JACOBI = {pq: f"Jacobi{pq.upper()}" for pq in JACOBI_LETTERS}
+JACOBI = MappingProxyType({pq: f"Jacobi{pq.upper()}" for pq in JACOBI_LETTERS})
 #: Neville's/Jacobi's theta index of each letter (DLMF 22.2.11: s, c, d, n ↔ 1, 2, 3, 4).
-THETA_INDEX = {"s": "1", "c": "2", "d": "3", "n": "4"}
+THETA_INDEX = MappingProxyType({"s": "1", "c": "2", "d": "3", "n": "4"})
 
-MACROS: dict[str, Macro] = {
+MACROS: dict[str, Macro] = MappingProxyType({
     # Legendre's integrals (DLMF 19.2), modulus k
     r"\compellintKk": Macro("EllipticK", 1, implied=("k",)),
     r"\compellintEk": Macro("EllipticE", 1, implied=("k",)),
@@ -94,16 +95,15 @@ MACROS: dict[str, Macro] = {
     r"\phase": Macro("arg"), r"\realpart": Macro("re"), r"\imagpart": Macro("im"),
     r"\sign": Macro("sign"), r"\sqrt": Macro("sqrt", form="sqrt"),
     r"\min": Macro("Min", 0, form="list"), r"\max": Macro("Max", 0, form="list"),
-}
+})
 
 #: Letters and constants.  Greek letters keep their names, except where the name is a
 #: Python keyword or a function of the notation.
-GREEK = {name: name for name in (
+GREEK = MappingProxyType({name: name for name in (
     "alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta",
     "vartheta", "iota", "kappa", "mu", "nu", "xi", "rho", "varrho", "sigma", "tau", "upsilon",
     "phi", "varphi", "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi",
-    "Sigma", "Upsilon", "Phi", "Psi", "Omega", "ell")}
-GREEK["lambda"] = "lamda"
+    "Sigma", "Upsilon", "Phi", "Psi", "Omega", "ell")} | {"lambda": "lamda"})
 #: Names a symbol may not take (functions and constants of the transcriptions).
 RESERVED = frozenset({
     "gamma", "beta", "pi", "I", "O", "oo", "exp", "sqrt", "sign", "re", "im",
@@ -112,13 +112,13 @@ RESERVED = frozenset({
     "Max", "Tuple", "Rational", "Abs", "conjugate", "sin", "cos", "tan", "log", "ln", "Float",
     "Integer", "Symbol", "Function", "D",
 })
-CONSTANTS = {r"\cpi": "pi", r"\pi": "pi", r"\iunit": "I", r"\expe": "E", r"\infty": "oo",
-             r"\EulerConstant": "EulerGamma"}
+CONSTANTS = MappingProxyType({r"\cpi": "pi", r"\pi": "pi", r"\iunit": "I", r"\expe": "E", r"\infty": "oo",
+             r"\EulerConstant": "EulerGamma"})
 
 #: Commands that only space or style the print.
 SPACING = frozenset({r"\,", r"\;", r"\!", r"\ ", r"\:", r"\*", r"\displaystyle", r"\textstyle",
                      r"\nolimits", r"\limits", r"\qquad"})
 #: Relations and their sympy heads; "to", "sim", "in" are for the caller to read.
-RELATIONS = {"=": "Eq", "<": "Lt", ">": "Gt", r"\leq": "Le", r"\le": "Le", r"\geq": "Ge",
+RELATIONS = MappingProxyType({"=": "Eq", "<": "Lt", ">": "Gt", r"\leq": "Le", r"\le": "Le", r"\geq": "Ge",
              r"\ge": "Ge", r"\neq": "Ne", r"\ne": "Ne", r"\to": "to", r"\rightarrow": "to",
-             r"\sim": "sim", r"\asympeq": "sim", r"\in": "in"}
+             r"\sim": "sim", r"\asympeq": "sim", r"\in": "in"})

@@ -27,7 +27,7 @@ from .lexer import Kind, Token
 from .macros import GREEK, JACOBI, RELATIONS, RESERVED, SPACING, THETA_INDEX
 from .options import Options, SemanticLatexError
 
-_CLOSERS = {")", "]", "}"}
+_CLOSERS = frozenset({")", "]", "}"})
 
 
 class Parser:
