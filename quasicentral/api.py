@@ -184,7 +184,7 @@ class LoadedText:
                 f"{len(self.text.cleared)} cleared suspects>")
 
 
-_STATUS_COLOUR = {Status.VERIFIED: "#1a7f37", Status.ERRATUM: "#9a6700", Status.CLEARED: "#0969da",
+_STATUS_COLOUR = {Status.VERIFIED: "#1a7f37", Status.ERRATUM: "#9a6700", Status.CLEARED: "#0969da", Status.NOTATION: "#57606a",
                   Status.UNEXPECTED: "#cf222e"}
 
 

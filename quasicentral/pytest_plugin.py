@@ -5,7 +5,7 @@ JUnit report — covers their notes.
 Each entry is one item, ``DIR/text.toml::<entry id>``: it passes where the entry is verified,
 a registered erratum or a cleared suspect; fails with its verdict, its problems and its witness
 where the printed form is refuted unexpectedly (or an erratum no longer stands); and is skipped,
-with its reason, where the verdict is inconclusive.  The text is verified once per process (the
+with its reason, where the verdict is inconclusive or the entry is notation (nothing to check).  The text is verified once per process (the
 verdict cache of ``quasicentral verify`` is used, so a second run reads it back).  A folder that
 cannot be read is one collection error naming its file and line.
 
@@ -89,8 +89,12 @@ class EntryItem(pytest.Item):
         self.eid = eid
 
     def runtest(self):
+        from quasicentral.engine.verdict import Status
+
         result = self.parent.results()[self.eid]
         o = result.outcome
+        if o.status is Status.NOTATION:
+            pytest.skip(f"{self.eid}: notation: {o.verdict.detail}")
         if o.ok:
             return
         if o.verdict.name == "inconclusive":

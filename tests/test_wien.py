@@ -105,3 +105,23 @@ def test_the_reasons_of_a_run_read_in_both_languages(results):
         assert en and cs and en != cs, (r.entry.id, en, cs)
         if r.witness is not None and r.witness.quantity is not None:
             assert render(r.witness.quantity, "en") != render(r.witness.quantity, "cs")
+
+
+def test_a_definition_is_notation_not_a_failure(tmp_path):
+    """An identity text's definition (and a bare expression) states nothing to check: status
+    'notation', which leaves the run ok — a handbook chapter verifies with its definitions."""
+    (tmp_path / "catalog").mkdir()
+    (tmp_path / "text.toml").write_text('id = "defs"\ntitle = "Definitions"\nlanguage = "en"\ncheck = "identity"\n\n'
+                                        '[symbols.x]\nlatex = "x"\nrange = ["0", "1"]\n\n'
+                                        '[symbols.c]\nlatex = "c"\nrange = ["0", "1"]\n', encoding="utf-8")
+    (tmp_path / "catalog" / "a.toml").write_text(
+        'section = "1"\ntitle = "One"\n\n'
+        '[[equation]]\nid = "defs:1"\nnumber = "1"\nname = "a definition"\nkind = "definition"\n'
+        "latex = 'c = 1 + x^2'\nprinted = 'Eq(c, 1 + x**2)'\n\n"
+        '[[equation]]\nid = "defs:2"\nnumber = "2"\nname = "notation"\n'
+        "latex = 'x'\nprinted = 'x'\n\n"
+        '[[equation]]\nid = "defs:3"\nnumber = "3"\nname = "a relation"\n'
+        "latex = '(1+x)^2 = 1 + 2x + x^2'\nprinted = 'Eq((1 + x)**2, 1 + 2*x + x**2)'\n", encoding="utf-8")
+    got = qc.load_text(tmp_path).verify(cache=False)
+    assert [r.status for r in got] == [Status.NOTATION, Status.NOTATION, Status.VERIFIED]
+    assert got.ok

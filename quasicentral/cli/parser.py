@@ -98,8 +98,8 @@ def build_parser() -> argparse.ArgumentParser:
                  "precision ladder (dps, 2·dps), certified by ball arithmetic where it can.  Verdicts are cached\n"
                  "under a hash of the code, the catalog, the errata and the options ($QUASICENTRAL_CACHE, else\n"
                  "~/.cache/quasicentral); a run whose code, texts and options are unchanged is read back whole.\n"
-                 "Exit 0 when every entry is verified, a registered erratum or a cleared\n"
-                 "suspect; 1 when anything is unexpected; 2 on bad usage (e.g. a selection that selects nothing).",
+                 "Exit 0 when every entry is verified, a registered erratum, a cleared suspect or notation (a\n"
+                 "definition: nothing to check); 1 when anything is unexpected; 2 on bad usage (e.g. a selection that selects nothing).",
                  "quasicentral verify\n"
                  "quasicentral verify --text mynotes --json\n"
                  "quasicentral verify --text mynotes --id mynotes:2 --no-cache --jobs 2\n"

@@ -362,6 +362,6 @@ def verdict_short(st: Step, lang: str) -> str:
     out = W["verdicts"][v.name] + (f" \\verdicthow{{{how}}}" if how else "")
     if o.status is Status.CLEARED:
         out += " (" + W["status"]["cleared"] + ")"
-    elif o.status is Status.UNEXPECTED:
-        out += " (" + W["status"]["unexpected"] + ")"
+    elif o.status in (Status.UNEXPECTED, Status.NOTATION):
+        out += " (" + W["status"][o.status.value] + ")"
     return out + "."

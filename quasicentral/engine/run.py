@@ -26,7 +26,8 @@ from quasicentral.engine.fingerprint import cache_dir, code_fingerprint
 from quasicentral.engine.identity import identity_derivation
 from quasicentral.engine.reasons import Code, Reason
 from quasicentral.engine.registry import Mode
-from quasicentral.engine.verdict import EntryRecords, Inconclusive, Method, Outcome, Refuted, Status, Verified
+from quasicentral.engine.verdict import (NOTATION_CODES, EntryRecords, Inconclusive, Method, Outcome, Refuted, Status,
+                                         Verified)
 from quasicentral.engine.workers import map_grouped
 from quasicentral.files import read_private, write_text
 from quasicentral.notation.timelimit import CPU, WALL, TimeLimitExceeded, time_limit
@@ -114,6 +115,9 @@ def _verify_entry(ws, entry: catalog.Entry, opts: Options, records: EntryRecords
         return Outcome(entry.id, v, status, problems=problems + noted, records=records)
     if isinstance(v, Verified):
         return Outcome(entry.id, v, Status.VERIFIED, problems=noted, records=records)
+    if isinstance(v, Inconclusive) and v.reason.code in NOTATION_CODES:
+        # a definition or notation: nothing to check, nothing unexpected
+        return Outcome(entry.id, v, Status.NOTATION, problems=noted, records=records)
     return Outcome(entry.id, v, Status.UNEXPECTED, problems=(Reason.of(Code.UNEXPECTED_VERDICT, verdict=v.name,
                                                                       reason=v.reason),), records=records)
 

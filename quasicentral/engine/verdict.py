@@ -157,12 +157,17 @@ def with_dimensions(v: Verdict, dims: tuple[DimensionCheck, ...]) -> Verdict:
     return replace(v, dimensions=dims)
 
 
+#: the reasons of an entry that states nothing to check (its status is NOTATION, not unexpected)
+NOTATION_CODES = frozenset({Code.DEFINES, Code.NOTATION_ONLY, Code.NOT_EQUAL_ONLY})
+
+
 class Status(str, Enum):
     """What an entry's verdict means against what the text's records expect of it."""
 
     VERIFIED = "verified"  # printed = derived
     ERRATUM = "erratum"  # printed refuted, the registered correction verified
     CLEARED = "cleared"  # a registered suspicion that verified
+    NOTATION = "notation"  # an entry that states nothing to check: a definition, notation only
     UNEXPECTED = "unexpected"  # anything else
 
     @property
