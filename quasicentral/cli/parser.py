@@ -75,7 +75,9 @@ def _add_timeout(parser: argparse.ArgumentParser) -> None:
 def _add_text_options(parser: argparse.ArgumentParser, source: bool = True) -> None:
     """--text DIR (repeatable) and --source ID: which texts a command works on."""
     parser.add_argument("--text", action="append", dest="texts", metavar="DIR",
-                        help="a text's folder, or a shipped text's id (repeatable; default: the shipped texts)")
+                        help="a text's folder, or a shipped text's id (repeatable; default: the shipped texts). "
+                             "A folder's .py modules are code and are run (as pytest runs conftest.py), bounded "
+                             "by --timeout; its TOML files are data, read and never executed")
     if source:
         parser.add_argument("--source", metavar="ID",
                             help="only the entries of the text with this id, among those selected (default: all)")
@@ -98,8 +100,9 @@ def build_parser() -> argparse.ArgumentParser:
                  "precision ladder (dps, 2·dps), certified by ball arithmetic where it can.  Verdicts are cached\n"
                  "under a hash of the code, the catalog, the errata and the options ($QUASICENTRAL_CACHE, else\n"
                  "~/.cache/quasicentral); a run whose code, texts and options are unchanged is read back whole.\n"
-                 "Exit 0 when every entry is verified, a registered erratum, a cleared suspect or notation (a\n"
-                 "definition: nothing to check); 1 when anything is unexpected; 2 on bad usage (e.g. a selection that selects nothing).",
+                 "Exit 0 when every entry is verified, a registered erratum, a cleared suspect or notation\n"
+                 "(a definition: nothing to check); 1 when anything is unexpected; 2 on bad usage (e.g. a\n"
+                 "selection that selects nothing).",
                  "quasicentral verify\n"
                  "quasicentral verify --text mynotes --json\n"
                  "quasicentral verify --text mynotes --id mynotes:2 --no-cache --jobs 2\n"

@@ -264,7 +264,7 @@ def _wget(w, key):
 
 def witness_short(w, lang: str, point: bool = True) -> str:
     """A witness in a few digits: the point (with ``point``), then the printed and the correct
-    value."""
+    value, in as many digits as it takes to tell them apart."""
     W = WORDS[lang]
     if w is None:
         return ""
@@ -273,8 +273,11 @@ def witness_short(w, lang: str, point: bool = True) -> str:
         return W["dims_bad"] + "."
     params = (_wget(w, "parameters") or {}) if point else {}
     pts = ", ".join(f"${_param_name(k)} = {number(v, lang)}$" for k, v in sorted(params.items()))
-    vals = W["vs"].format(p=f"${number(str(_wget(w, 'printed')), lang)}$",
-                          c=f"${number(str(_wget(w, 'corrected')), lang)}$")
+    printed, corrected = str(_wget(w, "printed")), str(_wget(w, "corrected"))
+    digits = 4  # a few digits — as many more as it takes to tell the two values apart (a rounding)
+    while digits < 15 and number(printed, lang, digits) == number(corrected, lang, digits):
+        digits += 1
+    vals = W["vs"].format(p=f"${number(printed, lang, digits)}$", c=f"${number(corrected, lang, digits)}$")
     return (f"{W['at']} {pts}: " if pts else "") + vals
 
 

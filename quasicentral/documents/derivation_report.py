@@ -150,10 +150,12 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
     elif st.error:
         out.append(" " + W["derivation_failed"] + "\n\n")
     elif same_as_printed(st):
-        out.append(" " + W["same_as_printed"] + "\n")
+        out.append(" " + W["same_as_printed"] + "\n\n")
     else:
         rows = derived_rows(st, prose=prose)
-        if rows is None:
+        if rows is None and mode is Mode.SUBSTITUTE and st.result == {}:
+            out.append(" " + W["as_it_stands"] + "\n\n")
+        elif rows is None:
             out.append(" " + W["same_as_printed"] + "\n\n")
         else:
             if mode is Mode.SUBSTITUTE:

@@ -97,7 +97,8 @@ def steps_of(ws, text, outcomes: dict[str, Outcome]) -> list[Step]:
     for e in text.entries.values():
         d = derivation_of(ws, e)
         result, error, uses = None, None, ()
-        if d is not None and d.func is not None:
+        # a folder's own code ran in workers: its results were brought back (run.derive_all)
+        if d is not None and (d.func is not None or ws.derivations.known(e.id)):
             try:
                 with quiet_stdout():
                     result = ws.result(e.id)

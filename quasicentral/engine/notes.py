@@ -9,8 +9,8 @@ per language, its numbers formatted as the language writes them (the JSON docume
 
 from __future__ import annotations
 
-from types import MappingProxyType
 import re
+from types import MappingProxyType
 
 import sympy as sp
 
@@ -33,10 +33,12 @@ def parameters_text(w, lang: str = "en") -> dict[str, str]:
 _SENTENCE = MappingProxyType({
     "en": ("at {at} the printed {q} is {p}, the derived {c} (relative difference {r}; {cert})",
            "certified", "not certified",
-           "no numeric witness (the printed relation is dimensionally inconsistent)"),
+           "no numeric witness (the printed relation is dimensionally inconsistent)",
+           "the printed value is {p}, the correct one {c} (relative difference {r}; {cert})"),
     "cs": ("v bodě {at} je vytištěná hodnota ({q}) {p}, odvozená {c} (relativní rozdíl {r}; {cert})",
            "certifikováno", "necertifikováno",
-           "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)"),
+           "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)",
+           "vytištěná hodnota je {p}, správná {c} (relativní rozdíl {r}; {cert})"),
 })
 
 
@@ -49,7 +51,8 @@ def witness_sentence(w, lang: str = "en") -> str:
 
     style = Plain(lang)
     at = ", ".join(f"{k} = {v}" for k, v in parameters_text(w, lang).items())
-    return words[0].format(at=at, q=render(w.quantity, lang), p=style.decimal(w.printed),
+    # a value with no point (a printed rounding, a special value) is said without one
+    return words[0 if at else 4].format(at=at, q=render(w.quantity, lang), p=style.decimal(w.printed),
                            c=style.decimal(w.corrected), r=style.decimal(w.relative_difference),
                            cert=words[1] if w.certified else words[2])
 
