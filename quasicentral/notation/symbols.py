@@ -134,6 +134,15 @@ def _landau(expr, *passage):
     return Landau(expr, var, point)
 
 
+def _limit(expr, var, point, dir="+-"):  # noqa: A002 - sympy's own keyword
+    """``Limit(f, x, x0)`` as a physicist writes it: **two-sided** (sympy's own default is from
+    the right); ``Limit(f, x, x0, "+")`` or ``"-"`` is one-sided, as written.  Towards ±∞ the
+    side is the only one there is."""
+    if str(dir) not in ("+", "-", "+-"):
+        raise SymbolError(f"Limit(f, x, x0, side): the side is '+', '-' or '+-', not {dir!r}")
+    return sp.Limit(expr, var, point, dir=str(dir))
+
+
 def _symbol(name):
     if not (isinstance(name, str) and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", name)):
         raise SymbolError(f"Symbol({name!r}): a name is a letter followed by letters, digits or _")
@@ -168,7 +177,7 @@ _CONSTANTS = MappingProxyType({"pi": sp.pi, "E": sp.E, "I": sp.I, "oo": sp.oo, "
 FUNCTIONS: MappingProxyType = MappingProxyType({
     **{name: getattr(sp, name) for name in _ELEMENTARY + _SPECIAL + _FORMS},
     **_CONSTANTS,
-    "ln": sp.log, "Eq": printed_eq, "O": _landau, "Order": _landau, "Symbol": _symbol, "Function": _function,
+    "ln": sp.log, "Eq": printed_eq, "Limit": _limit, "O": _landau, "Order": _landau, "Symbol": _symbol, "Function": _function,
     "Approx": _approx,
     "D": D, "Fj": Fj, "Ej": Ej, "Kc": Kc, "Ec": Ec, "arccotg": arccotg,
     **SPECIAL_FUNCTIONS,  # DLMF chapters 19, 20 and 22 in DLMF's notation (modulus k)
