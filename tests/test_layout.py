@@ -138,3 +138,37 @@ def test_no_module_level_mutable_state(module, path):
         if isinstance(node, ast.Expr) and isinstance(node.value, ast.Call) and isinstance(node.value.func, ast.Attribute) \
                 and node.value.func.attr in ("update", "append", "extend", "add", "setdefault", "insert", "clear", "pop"):
             raise AssertionError(f"{module}:{node.lineno}: a module-level table changed in place")
+
+
+def _graph() -> dict[str, set[str]]:
+    """Which module imports which, function-local imports included (a cycle hides there)."""
+    known = {m for m, _ in MODULES}
+    graph = {}
+    for module, path in MODULES:
+        deps = set()
+        for target, name, _ in _imports(ast.parse(path.read_text())):
+            full = f"{target}.{name}" if name else target
+            deps.add(full if full in known else target)
+        # a submodule imports its own package on the way: not an edge of ours
+        graph[module] = {d for d in deps & known if d != module and not module.startswith(d + ".")}
+    return graph
+
+
+def test_no_import_cycle():
+    graph, state, stack, cycles = _graph(), {}, [], []
+
+    def visit(m):
+        state[m] = "open"
+        stack.append(m)
+        for d in sorted(graph[m]):
+            if state.get(d) == "open":
+                cycles.append(" → ".join(stack[stack.index(d):] + [d]))
+            elif d not in state:
+                visit(d)
+        stack.pop()
+        state[m] = "done"
+
+    for m in sorted(graph):
+        if m not in state:
+            visit(m)
+    assert not cycles, cycles

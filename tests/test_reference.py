@@ -16,6 +16,7 @@ from quasicentral.models import period
 from quasicentral.models import quadratic
 
 from quasicentral.models import reference as R
+from quasicentral.models import accuracy as A
 
 OMEGA = math.sqrt(10.0)
 T = 2 * math.pi / OMEGA
@@ -32,7 +33,7 @@ def lin(kappa, v0=0.1):
 def test_dop853_against_the_closed_form_over_ten_periods(ratio):
     sol = R.solve("linear", lin(ratio * OMEGA), TEN, tol=1e-12, method="dop853")
     assert sol.method == "dop853" and sol.x.dtype == float
-    assert R.closed_form_error(sol) < 1e-12
+    assert A.closed_form_error(sol) < 1e-12
 
 
 @needs_heyoka
@@ -40,7 +41,7 @@ def test_dop853_against_the_closed_form_over_ten_periods(ratio):
 def test_heyoka_against_the_closed_form_at_high_precision(tol):
     sol = R.solve("linear", lin(0.4), TEN, tol=tol)
     assert sol.method == "heyoka" and sol.x.dtype == object
-    assert R.closed_form_error(sol) < tol
+    assert A.closed_form_error(sol) < tol
 
 
 def test_without_heyoka_auto_falls_back_to_mpmath(monkeypatch):
@@ -53,7 +54,7 @@ def test_without_heyoka_auto_falls_back_to_mpmath(monkeypatch):
 
 def test_mpmath_fallback_against_the_closed_form():
     sol = R.solve("linear", lin(0.4), [0.3, 0.9], tol=1e-18, method="mpmath")
-    assert R.closed_form_error(sol) < 1e-18
+    assert A.closed_form_error(sol) < 1e-18
 
 
 # --- the exact laws --------------------------------------------------------------------------------
@@ -159,7 +160,7 @@ def test_negative_times_refused_and_unsorted_times_kept_in_order():
 # --- validity of the approximations ----------------------------------------------------------------
 def test_small_swing_error_shrinks_like_amplitude_squared():
     t = np.linspace(0, 2 * 2 * math.pi / math.sqrt(9.81), 50)
-    errs = [np.max(R.approximation_error("linear", {"R0": a, "v0": 0.5 * a * math.sqrt(9.81), "l": 1.0, "g": 9.81,
+    errs = [np.max(A.approximation_error("linear", {"R0": a, "v0": 0.5 * a * math.sqrt(9.81), "l": 1.0, "g": 9.81,
                                                      "kappa": 0.05}, t)) for a in (0.01, 0.02, 0.04)]
     slope = np.polyfit(np.log([0.01, 0.02, 0.04]), np.log(errs), 1)[0]
     assert 1.9 < slope < 2.1
@@ -168,7 +169,7 @@ def test_small_swing_error_shrinks_like_amplitude_squared():
 def test_first_order_error_is_second_order_in_beta():
     t = np.linspace(0, 2 * math.pi / math.sqrt(9.81), 40)
     bs = np.array([0.01, 0.02, 0.04])  # βR0
-    errs = [np.max(R.approximation_error("quadratic-first-order", {"R0": 0.1, "v0": 0.15, "l": 1.0, "g": 9.81,
+    errs = [np.max(A.approximation_error("quadratic-first-order", {"R0": 0.1, "v0": 0.15, "l": 1.0, "g": 9.81,
                                                                    "beta": b / 0.1}, t, against="small-swing"))
             for b in bs]
     slope = np.polyfit(np.log(bs), np.log(errs), 1)[0]
@@ -176,7 +177,7 @@ def test_first_order_error_is_second_order_in_beta():
 
 
 def test_approximation_error_shape_and_start():
-    e = R.approximation_error("quadratic", {"R0": 0.2, "v0": 0.3, "l": 1.0, "g": 9.81, "beta": 0.3},
+    e = A.approximation_error("quadratic", {"R0": 0.2, "v0": 0.3, "l": 1.0, "g": 9.81, "beta": 0.3},
                               np.array([[0.0, 1.0], [2.0, 3.0]]))
     assert e.shape == (2, 2) and e[0, 0] == 0.0 and np.all(e[1] > 0)
 
@@ -189,7 +190,7 @@ def test_approximation_error_shape_and_start():
 ])
 def test_approximation_error_bad_input(model, params):
     with pytest.raises(R.ModelError):
-        R.approximation_error(model, params, [1.0])
+        A.approximation_error(model, params, [1.0])
 
 
 # --- property-based: the evaluators against the references -----------------------------------------

@@ -87,14 +87,14 @@ TRAJECTORY_CHOICES = [n for n in sorted(EXPECTED) if EXPECTED[n][0] in ("linear"
 @pytest.mark.parametrize("name", TRAJECTORY_CHOICES)
 def test_trajectory_choice_against_the_reference_integrator(decisions, name):
     """The chosen model's error as measured by the reference module's own full pendulum
-    (``reference.approximation_error``, an independent integration)."""
-    from quasicentral.models import reference
+    (``accuracy.approximation_error``, an independent integration)."""
+    from quasicentral.models import accuracy
 
     d = decisions[name]
     s = d.scene
     params = {"R0": s.R0, "v0": s.v0, "l": s.length, "g": s.g, **({"kappa": s.kappa} if s.kappa else {}),
               **({"beta": s.beta} if s.beta else {})}
-    err = float(np.max(reference.approximation_error(d.chosen.model, params, d.times))) * s.R0
+    err = float(np.max(accuracy.approximation_error(d.chosen.model, params, d.times))) * s.R0
     assert err <= s.tolerance
     assert abs(err - scenes.distance("trajectory", d.chosen.value, d.richest.value)) <= d.richest.estimated_error
 

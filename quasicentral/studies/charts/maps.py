@@ -8,7 +8,7 @@ import math
 import mpmath
 import numpy as np
 
-from quasicentral.models import motion, period, quadratic, reference
+from quasicentral.models import accuracy, motion, period, quadratic, reference
 from quasicentral.models.parameters import G_STANDARD
 from quasicentral.studies.charts.common import OMEGA, rel as _rel, traj_err as _traj_err
 from quasicentral.studies.charts.naive import (
@@ -189,7 +189,7 @@ VALIDITY_MODELS = (("linear", "spherical", "kappa"), ("quadratic", "spherical", 
 
 
 def measure_validity(settings: Settings) -> list[dict]:
-    """Max over [0, N periods] of :func:`reference.approximation_error`, over amplitude R0/l ×
+    """Max over [0, N periods] of :func:`accuracy.approximation_error`, over amplitude R0/l ×
     drag (κ/Ω or βR0), N = 1 and 10; v0 = R0Ω/2 (an ellipse), l = 1 m, g = 9.81 m/s²."""
     rows = []
     length, g = 1.0, G_STANDARD
@@ -207,7 +207,7 @@ def measure_validity(settings: Settings) -> list[dict]:
             for d in drags:
                 drag = float(d) * om if law == "kappa" else float(d) / R0
                 params = {"R0": R0, "v0": 0.5 * R0 * om, "l": length, "g": g, law: drag}
-                err = reference.approximation_error(model, params, t, against=against)
+                err = accuracy.approximation_error(model, params, t, against=against)
                 for n in (1, tmax):
                     rows.append({"model": model, "against": against, "drag_law": law, "amplitude": float(a),
                                  "drag": float(d), "periods": n, "error": float(np.max(err[t <= n * T + 1e-9]))})
