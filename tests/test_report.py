@@ -35,7 +35,8 @@ from quasicentral.engine.options import Options
 from quasicentral.notation import bridge
 from quasicentral.notation.symbols import D, Ec, Ej, Fj, Kc, arccotg
 from quasicentral.cli import main
-from quasicentral.documents.latex import Notation, display_rows, escape, paper_latex, text, using, with_math
+from quasicentral.documents.latex import Notation, display_rows, paper_latex, using
+from quasicentral.documents.prosetex import escape, text, with_math
 
 S = shipped.symbols("brepta1953")  # the printer speaks a text's notation: here Brepta's
 P = shipped.symbols("pendulum")
@@ -488,7 +489,7 @@ def test_no_module_of_documents_names_a_shipped_text():
     ("the suspicion 'exponents 3/4' and \"α = 0\", Newton's C'", "the suspicion ‘exponents 3/4’ and “α = 0”, Newton's C′"),
 ])
 def test_clean_prose(raw, clean):
-    from quasicentral.documents.latex import clean_prose
+    from quasicentral.documents.prosetex import clean_prose
 
     assert clean_prose(raw) == clean
 

@@ -10,8 +10,9 @@ import sys
 
 import sympy as sp
 
-from quasicentral.documents.latex import (MATH_CHARS, display_rows, escape, names_as_printed, notation, paper_latex,
-                                          relation_lines, text, visible_width, wrap_row)
+from quasicentral.documents.latex import (display_rows, names_as_printed, notation, paper_latex, relation_lines,
+                                          visible_width, wrap_row)
+from quasicentral.documents.prosetex import MATH_CHARS, escape, text
 from quasicentral.documents.prose import WORDS, TextProse
 from quasicentral.documents.steps import Step, paragraphs, ref_of  # noqa: F401 - re-exported
 from quasicentral.engine.reasons import Code

@@ -9,7 +9,7 @@ from quasicentral.documents.blocks import (VERSIONS_FILE, aligned, certified_mar
                                            dimension_sentence, display, gathered, pdf_safe, preamble, printed_display,
                                            printed_rows, ref_of, same_as_printed, title_block, verdict_short,
                                            witness_short)
-from quasicentral.documents.latex import clean_prose, escape, with_math
+from quasicentral.documents.prosetex import clean_prose, escape, with_math
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
 from quasicentral.documents.steps import (CauseGroup, FigureItem, Step, TextRecords, caption, cause_groups, cause_note,
                                           cause_title, entry_heading, erratum_note, figures_for, kind_name,

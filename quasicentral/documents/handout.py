@@ -10,7 +10,7 @@ from enum import Enum
 from quasicentral.documents.blocks import paragraphs, pdf_safe, preamble, printed_display, ref_of, tagged_display, \
     title_block
 from quasicentral.documents.derivation_report import figures_section
-from quasicentral.documents.latex import clean_prose, escape
+from quasicentral.documents.prosetex import clean_prose, escape
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
 from quasicentral.documents.steps import (Step, TextRecords, cause_groups, cause_note, kind_name, section_title,
                                           sections_of, step_text)

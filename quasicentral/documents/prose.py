@@ -379,7 +379,7 @@ def _lang_table(raw, where: str) -> dict[str, str]:
 def generic_prose(text_id: str, title: str | None = None) -> TextProse:
     """The prose of a text that brings no report.toml: its title (or its id) — plain text from
     text.toml, escaped — and generic words."""
-    from quasicentral.documents.latex import text
+    from quasicentral.documents.prosetex import text
 
     name = text(title or text_id)
     return TextProse(text_id, {lang: name for lang in LANGS}, dict(GENERIC["intro"]),

@@ -15,7 +15,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from quasicentral.documents.latex import clean_prose, escape, text, with_math
+from quasicentral.documents.prosetex import clean_prose, escape, text, with_math
 from quasicentral.documents.prose import KINDS_CS, WORDS, TextProse, join_refs, prose_of
 from quasicentral.engine import catalog
 from quasicentral.engine import errata as errata_mod
