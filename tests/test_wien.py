@@ -125,3 +125,15 @@ def test_a_definition_is_notation_not_a_failure(tmp_path):
     got = qc.load_text(tmp_path).verify(cache=False)
     assert [r.status for r in got] == [Status.NOTATION, Status.NOTATION, Status.VERIFIED]
     assert got.ok
+
+
+def test_an_indefinite_integral_states_its_derivative():
+    """∫ f dx = F holds up to a constant: F′ = f is the claim (never an evaluation of ∫ f dx)."""
+    from quasicentral.engine.claims import identity_claims
+
+    x = sp.Symbol("x")
+    (claim,) = identity_claims([sp.Eq(sp.Integral(sp.cos(x), x), sp.sin(x) + 7, evaluate=False)])
+    assert claim.quantity.code is Code.Q_ANTIDERIVATIVE
+    assert sp.simplify(claim.printed - claim.derived) == 0
+    (plain,) = identity_claims([sp.Eq(sp.Integral(sp.cos(x), (x, 0, 1)), sp.sin(1), evaluate=False)])
+    assert plain.quantity.code is Code.Q_SIDES

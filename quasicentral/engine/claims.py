@@ -122,7 +122,9 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
         introduced = sorted((set(defines) & rel.free_symbols) if isinstance(rel, sp.Basic) else (), key=str)
         if introduced:
             raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(str(s) for s in introduced)))
-        if isinstance(rel, sp.Eq):
+        if isinstance(rel, sp.Eq) and _antiderivative(rel) is not None:
+            out.append(_antiderivative(rel))
+        elif isinstance(rel, sp.Eq):
             out.append(Claim(doit_derivatives(rel.lhs), doit_derivatives(rel.rhs), Reason(Code.Q_SIDES)))
         elif type(rel) in INEQUALITIES:
             low, high = (rel.lhs, rel.rhs) if INEQUALITIES[type(rel)] else (rel.rhs, rel.lhs)
@@ -137,6 +139,21 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
     if not out:
         raise CannotCompare(Reason(Code.NOTHING_TO_CHECK))
     return out
+
+
+def _indefinite(e) -> bool:
+    return isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 1
+
+
+def _antiderivative(rel: sp.Eq) -> Claim | None:
+    """``∫ f dx = F`` (an indefinite integral, determined up to a constant): F′ = f is what it
+    states, and what is checked (DLMF §22.14, tables of integrals)."""
+    for side, other in ((rel.lhs, rel.rhs), (rel.rhs, rel.lhs)):
+        if _indefinite(side) and not (_indefinite(other) or other.has(sp.Integral)):
+            (x,) = side.limits[0]
+            return Claim(doit_derivatives(sp.Derivative(other, x)), side.function,
+                         Reason.of(Code.Q_ANTIDERIVATIVE, variable=str(x)))
+    return None
 
 
 def _condition_claims(printed: list, result, unknowns=None) -> list[Claim]:

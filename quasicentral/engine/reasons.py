@@ -103,6 +103,7 @@ class Code(str, Enum):
     Q_PRINTED_RESIDUAL = "q-printed-residual"  # unknown
     Q_UNKNOWN = "q-unknown"  # unknown: the value of the unknown, printed and derived
     Q_DIMENSIONS = "q-dimensions"
+    Q_ANTIDERIVATIVE = "q-antiderivative"  # variable: d/dx of the printed antiderivative, and the integrand
     Q_SIDES = "q-sides"  # the left and the right side of a printed equation
     Q_ORDER_RATIO = "q-order-ratio"  # variable, point: |lhs − rhs|/|O-term| at the last and an earlier step
     Q_LESSER_GREATER = "q-lesser-greater"  # the side printed lesser and the side printed greater

@@ -308,6 +308,9 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                         "cs": lambda f, s: "výraz na odvozeném řešení"},
     Code.Q_ROUNDING: {"en": lambda f, s: "the printed decimal and the exact value",
                       "cs": lambda f, s: "vytištěné desetinné číslo a přesná hodnota"},
+    Code.Q_ANTIDERIVATIVE: {
+        "en": lambda f, s: f"the derivative in {s.expr(f.variable)} of the printed antiderivative, and the integrand",
+        "cs": lambda f, s: f"derivace vytištěné primitivní funkce podle {s.expr(f.variable)} a integrand"},
     Code.Q_UNDER_CONDITION: {"en": lambda f, s: f"{s.expr(f.quantity)} under the condition",
                              "cs": lambda f, s: f"{s.expr(f.quantity)} při dané podmínce"},
     Code.Q_PRINTED_RESIDUAL: {
