@@ -306,6 +306,9 @@ def _limit(form, outer):
         vals = vals[:len(outer)]
         x0 = at(*vals)
         g = lambda t: f(t, *vals)  # noqa: E731
+        direct = _continuous_value(g, x0, sides)
+        if direct is not None:
+            return direct
         out = []
         for direction in sides:
             # Richardson's extrapolation (mpmath's default) and the exponential sequence
@@ -314,6 +317,26 @@ def _limit(form, outer):
                                  mpmath.limit(g, x0, direction=direction, exp=True)))
         return _agreeing(out[0], out[-1])
     return value
+
+
+def _continuous_value(g, x0, sides):
+    """g(x0) where g is continuous there: finite at x0 and, a step h = 10^(−dps/3)·max(1, |x0|)
+    away on each side of the limit, within 10^(−dps/4) (relative) of it — three evaluations
+    instead of an extrapolation's hundreds (a Jacobian function at a complex point: 18 s → 0.1 s).
+    None where g is not evaluable at x0 (0/0, a pole) or jumps there: the sequences decide."""
+    if not mpmath.isfinite(x0):
+        return None
+    dps = mpmath.mp.dps
+    try:
+        v0 = g(x0)
+        if not mpmath.isfinite(v0):
+            return None
+        h = mpmath.mpf(10) ** (-dps // 3) * max(1, abs(x0))
+        near = [g(x0 + side * h) for side in sides]
+    except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence):
+        return None
+    tol = mpmath.mpf(10) ** (-dps // 4) * max(1, abs(v0))
+    return v0 if all(mpmath.isfinite(v) and abs(v - v0) <= tol for v in near) else None
 
 
 def _derivative(form, outer):
