@@ -31,6 +31,7 @@ from enum import Enum
 from quasicentral.engine import catalog
 from quasicentral.engine.checker import Options, check
 from quasicentral.engine.verdict import Refuted, Verified
+from quasicentral.engine.registry import Mode
 from quasicentral.notation.symbols import SymbolTable
 from quasicentral.progress import OptionalCallback, notify
 
@@ -164,8 +165,8 @@ def _valid(gen):
             continue
 
 
-def mutants_of(entry: catalog.Entry, per_entry: int | None = None) -> list[Mutant]:
-    rels = entry.relations()
+def mutants_of(entry: catalog.Entry, per_entry: int | None = None, roundings: bool = False) -> list[Mutant]:
+    rels = entry.relations(roundings=roundings)
     out, seen = [], set()
     for i, rel in enumerate(rels):
         for op, site, new in _valid(mutations(rel, entry.symbols)):
@@ -281,16 +282,19 @@ def _run_entry(ws, eid: str, per_entry: int | None):
             result, failed = (ws.result(eid) if der.func is not None else {}), None
         except (Exception, SystemExit) as exc:  # noqa: BLE001 - the entry's derivation failed: no mutants to judge
             result, failed = None, f"{type(exc).__name__}: {exc}"
-        base = check(entry.relations(), entry.dims, der, eid, FAST, entry.symbols, result, failed)
+        # the relations as verify reads them (in an identity text a printed decimal is a rounding)
+        roundings = der.mode is Mode.IDENTITY
+        printed = entry.relations(roundings=roundings)
+        base = check(printed, entry.dims, der, eid, FAST, entry.symbols, result, failed)
         rows, on_domain = [], []
         if failed is not None:
             return eid, True, rows, on_domain
-        for mu in mutants_of(entry, per_entry):
+        for mu in mutants_of(entry, per_entry, roundings):
             v = check(list(mu.relations), entry.dims, der, eid, FAST, entry.symbols, result)
             # an equivalent mutant has the original's values, so it cannot be refuted where the
             # original is not (a refuted original is a false alarm, counted apart): sympy is asked
             # whether a mutant is equivalent only when the numbers did not refute it
-            if not isinstance(v, Refuted) and _equivalent(list(mu.relations), entry.relations(), der, result):
+            if not isinstance(v, Refuted) and _equivalent(list(mu.relations), printed, der, result):
                 continue
             if isinstance(v, Verified):
                 how = equivalent_on_domain(list(mu.relations), der, result, f"{eid}:{mu.operator}:{mu.site}",

@@ -101,12 +101,16 @@ def check(rel: Approx, defs: dict, opts: Options) -> Verdict:
     half = Fraction(1, 2 * 10 ** places) if places >= 0 else Fraction(10 ** -places, 2)
     method = Method.CERTIFIED if certified else Method.NUMERIC
     mid = (lo + hi) / 2
-    exact = _decimal(mid, places + SHOWN_BEYOND)
+    # the exact value in the digits both ends of its enclosure round to alike (every one guaranteed)
+    shown_places = places + SHOWN_BEYOND
+    while shown_places > places and _decimal(lo, shown_places) != _decimal(hi, shown_places):
+        shown_places -= 1
+    exact = _decimal(mid, shown_places)
     if printed - half < lo and hi < printed + half:
         return Verified(method, Reason.of(Code.ROUNDS_TO, value=exact, printed=shown, places=places), 1)
     if hi < printed - half or lo > printed + half:
         rel_diff = abs(mid - printed) / abs(mid) if mid else Fraction(1)
-        w = Witness(parameters={}, printed=shown, corrected=exact, digits=places + SHOWN_BEYOND, certified=certified,
+        w = Witness(parameters={}, printed=shown, corrected=exact, digits=len(exact.lstrip("-").replace(".", "").lstrip("0")), certified=certified,
                     quantity=Reason(Code.Q_ROUNDING), relative_difference=f"{float(rel_diff):.3g}",
                     printed_certified=True, corrected_certified=certified, working_digits=0)
         return Refuted(method, Reason.of(Code.ROUNDS_OTHERWISE, printed=shown, exact=exact, places=places), 1,
