@@ -110,7 +110,8 @@ def check(rel: Approx, defs: dict, opts: Options) -> Verdict:
         return Verified(method, Reason.of(Code.ROUNDS_TO, value=exact, printed=shown, places=places), 1)
     if hi < printed - half or lo > printed + half:
         rel_diff = abs(mid - printed) / abs(mid) if mid else Fraction(1)
-        w = Witness(parameters={}, printed=shown, corrected=exact, digits=len(exact.lstrip("-").replace(".", "").lstrip("0")), certified=certified,
+        significant = len(exact.lstrip("-").replace(".", "").lstrip("0"))
+        w = Witness(parameters={}, printed=shown, corrected=exact, digits=significant, certified=certified,
                     quantity=Reason(Code.Q_ROUNDING), relative_difference=f"{float(rel_diff):.3g}",
                     printed_certified=True, corrected_certified=certified, working_digits=0)
         return Refuted(method, Reason.of(Code.ROUNDS_OTHERWISE, printed=shown, exact=exact, places=places), 1,
