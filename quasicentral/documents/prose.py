@@ -63,10 +63,12 @@ WORDS = MappingProxyType({
         # the steps, when no words of the text's own say more
         "step_from": {"solve": "It follows from {refs}.", "expression": "The expression follows from {refs}.",
                       "condition": "The condition follows from {refs}.",
-                      "substitute": "It is checked by putting the solution {refs} into it."},
+                      "substitute": "It is checked by putting the solution {refs} into it.",
+                      "identity": "It is checked as printed, with the definitions of {refs}."},
         "step_none": {"solve": "A starting relation of the text.", "expression": "A starting expression of the text.",
                       "condition": "A condition stated by the text.",
-                      "substitute": "It is checked on the solution of the text."},
+                      "substitute": "It is checked on the solution of the text.",
+                      "identity": "It is checked as printed, on its stated constraints."},
         # report
         "summary": "Summary",
         "checked": (r"This report checks the {n} equations of the text one by one.  Each was derived "
@@ -191,10 +193,12 @@ WORDS = MappingProxyType({
         "teacher_note": r"Toto vydání má na konci řešení cvičení; vydání pro studenty je nemá.",
         "step_from": {"solve": "Vztah plyne z~{refs}.", "expression": "Výraz dostaneme z~{refs}.",
                       "condition": "Podmínka plyne z~{refs}.",
-                      "substitute": "Vztah ověříme dosazením řešení {refs}."},
+                      "substitute": "Vztah ověříme dosazením řešení {refs}.",
+                      "identity": "Vztah ověříme tak, jak je vytištěn, s~definicemi z~{refs}."},
         "step_none": {"solve": "Výchozí vztah textu.", "expression": "Výchozí výraz textu.",
                       "condition": "Podmínka, kterou text klade.",
-                      "substitute": "Vztah ověříme na řešení, které text uvádí."},
+                      "substitute": "Vztah ověříme na řešení, které text uvádí.",
+                      "identity": "Vztah ověříme tak, jak je vytištěn, na oboru, který text udává."},
         "summary": "Přehled",
         "checked": (r"Tato zpráva ověřuje jednu po druhé všech {n} rovnic textu.  Každou jsme znovu "
                     r"odvodili v~systému počítačové algebry sympy z~rovnic, na kterých stojí, a~porovnali "

@@ -334,7 +334,8 @@ def clean_prose(s: str) -> str:
     s = re.sub(r"\btest_\w+", "a test", s)
     s = re.sub(r"\b(" + "|".join(sorted(CODE_NAMES, key=len, reverse=True)) + r")(?=\()",
                lambda m: CODE_NAMES[m.group(1)], s)
-    s = re.sub(r"\b(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(\d?)\b",
+    # a Greek letter's name as its letter — not in the name of a function or a constant ("the gamma function", "the omega constant")
+    s = re.sub(r"\b(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(\d?)\b(?!\s+(?:functions?|constants?)\b)",
                lambda m: _GREEK_WORDS[m.group(1)] + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
     s = re.sub(r"\bint_(\w)\^(\w+|\{[^{}]*\})", r"∫_\1^\2", s)
     s = re.sub(r"\b(elliptic_[kfe]|Fj|Ej|Kc|Ec)\b", lambda m: CODE_NAMES[m.group(1)], s)

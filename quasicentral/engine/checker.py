@@ -29,7 +29,7 @@ from dataclasses import replace
 import sympy as sp
 
 from quasicentral.engine import asymptotic, rounding
-from quasicentral.engine.claims import CannotCompare, Claim, claims_for, decided  # noqa: F401 - re-exported
+from quasicentral.engine.claims import CannotCompare, Claim, HoldsAsPrinted, claims_for, decided  # noqa: F401
 from quasicentral.engine.dimensions import check_relation
 from quasicentral.engine.ladder import numeric
 from quasicentral.engine.options import Options
@@ -86,6 +86,8 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
             claims = claims_for(printed, derivation, result)
     except CannotCompare as exc:
         return unsettled(exc.reason)
+    except HoldsAsPrinted:
+        return Verified(Method.SYMBOLIC, Reason(Code.DECIDED_TRUE), dimensions=findings)
     except TimeLimitExceeded as exc:
         if limit is None or not limit.owns(exc):
             raise

@@ -45,6 +45,11 @@ class CannotCompare(Exception):
         self.reason = reason
 
 
+class HoldsAsPrinted(Exception):
+    """Every printed relation is one sympy decides true as it stands (from the symbols'
+    assumptions: 0 ≤ erf x for x > 0): a proof, nothing left to compare."""
+
+
 def doit_derivatives(e):
     return e.replace(lambda a: isinstance(a, sp.Derivative), lambda a: a.doit()) if e.has(sp.Derivative) else e
 
@@ -117,8 +122,13 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
     equations), each inequality as its lesser side at most its greater.  Derivatives sympy can
     carry out are carried out; the rest is left to the numbers.  A relation that holds a symbol
     the entry introduces (``defines``) is its definition: notation, nothing to check."""
-    out = []
+    out, decided_true = [], False
+    # a chain a < b < c is read as And(a < b, b < c): each of its relations
+    printed = [r for rel in printed for r in (rel.args if isinstance(rel, sp.And) else (rel,))]
     for rel in printed:
+        if rel is sp.true:  # sympy decided it from the symbols' assumptions: it holds as printed
+            decided_true = True
+            continue
         introduced = sorted((set(defines) & rel.free_symbols) if isinstance(rel, sp.Basic) else (), key=str)
         if introduced:
             raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(str(s) for s in introduced)))
@@ -136,6 +146,8 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
             raise CannotCompare(Reason(Code.NOT_EQUAL_ONLY))
         else:
             raise CannotCompare(Reason(Code.NOTATION_ONLY))
+    if not out and decided_true:
+        raise HoldsAsPrinted()
     if not out:
         raise CannotCompare(Reason(Code.NOTHING_TO_CHECK))
     return out

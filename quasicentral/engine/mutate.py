@@ -32,7 +32,7 @@ from quasicentral.engine import catalog
 from quasicentral.engine.checker import Options, check
 from quasicentral.engine.verdict import Refuted, Verified
 from quasicentral.engine.registry import Mode
-from quasicentral.notation.symbols import SymbolTable
+from quasicentral.notation.symbols import Approx, Landau, SymbolTable
 from quasicentral.progress import OptionalCallback, notify
 
 #: the check each mutant gets: 10 points, no sympy, no balls.  A mutant whose dimensions do not
@@ -60,7 +60,14 @@ def _walk(e, path=()):
     if isinstance(e, sp.Derivative):
         yield from _walk(e.expr, path + (0,))
         return
-    if isinstance(e, (sp.Integral, sp.Sum)):
+    if isinstance(e, (Approx, Landau)):  # the printed value, its places, an O-term's passage are not sites
+        yield from _walk(e.args[0], path + (0,))
+        return
+    if isinstance(e, sp.Limit):  # nor a limit's variable and side: its body and its point are
+        yield from _walk(e.args[0], path + (0,))
+        yield from _walk(e.args[2], path + (2,))
+        return
+    if isinstance(e, (sp.Integral, sp.Sum, sp.Product)):
         yield from _walk(e.function, path + (0,))
         for i, lim in enumerate(e.limits, start=1):
             for j in range(1, len(lim)):
@@ -150,8 +157,9 @@ def mutations(rel: sp.Basic, table: SymbolTable):
 
 
 def _applied(node) -> bool:
-    """An application of a named function (sympy's or the notation's), not an operator."""
-    return isinstance(node, sp.Function) and not isinstance(node, sp.core.function.AppliedUndef)
+    """An application of a named function (sympy's or the notation's), not an operator, nor a
+    printed rounding or an O-term (their arguments are not interchangeable)."""
+    return isinstance(node, sp.Function) and not isinstance(node, (sp.core.function.AppliedUndef, Approx, Landau))
 
 
 def _valid(gen):

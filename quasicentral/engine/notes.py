@@ -4,7 +4,7 @@ per language, its numbers formatted as the language writes them (the JSON docume
 >>> from quasicentral.engine.verdict import Witness
 >>> w = Witness({"t": "3/2"}, "1.5", "2.25", 3, True, relative_difference="3.333e-01")
 >>> render_note("at t = {witness.parameters.t}: {witness.printed}", w, "cs")
-'at t = 1,5000000: 1,5'
+'at t = 1,5: 1,5'
 """
 
 from __future__ import annotations
@@ -26,19 +26,22 @@ def parameters_text(w, lang: str = "en") -> dict[str, str]:
     out = {}
     for k, v in w.parameters.items():
         val = sp.sympify(v, rational=True) if not isinstance(v, sp.Basic) else v
-        out[k] = v if val.is_Rational and val.q == 1 else style.decimal(sp.sstr(sp.N(val, PARAMETER_DIGITS)))
+        short = sp.sstr(sp.N(val, PARAMETER_DIGITS))
+        if "." in short and "e" not in short:  # 1.5000000 → 1.5: the zeros say nothing
+            short = short.rstrip("0").rstrip(".")
+        out[k] = v if val.is_Rational and val.q == 1 else style.decimal(short)
     return out
 
 
 _SENTENCE = MappingProxyType({
-    "en": ("at {at} the printed {q} is {p}, the derived {c} (relative difference {r}; {cert})",
+    "en": ("at {at} the printed form gives {p}, the correct one {c} ({q}{r}; {cert})",
            "certified", "not certified",
            "no numeric witness (the printed relation is dimensionally inconsistent)",
-           "the printed value is {p}, the correct one {c} (relative difference {r}; {cert})"),
-    "cs": ("v bodě {at} je vytištěná hodnota ({q}) {p}, odvozená {c} (relativní rozdíl {r}; {cert})",
+           "the printed value is {p}, the correct one {c} ({q}{r}; {cert})", "; relative difference "),
+    "cs": ("v bodě {at} dává vytištěný tvar {p}, správný {c} ({q}{r}; {cert})",
            "certifikováno", "necertifikováno",
            "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)",
-           "vytištěná hodnota je {p}, správná {c} (relativní rozdíl {r}; {cert})"),
+           "vytištěná hodnota je {p}, správná {c} ({q}{r}; {cert})", "; relativní rozdíl "),
 })
 
 
@@ -52,9 +55,9 @@ def witness_sentence(w, lang: str = "en") -> str:
     style = Plain(lang)
     at = ", ".join(f"{k} = {v}" for k, v in parameters_text(w, lang).items())
     # a value with no point (a printed rounding, a special value) is said without one
+    r = words[5] + style.decimal(w.relative_difference) if w.relative_difference else ""
     return words[0 if at else 4].format(at=at, q=render(w.quantity, lang), p=style.decimal(w.printed),
-                           c=style.decimal(w.corrected), r=style.decimal(w.relative_difference),
-                           cert=words[1] if w.certified else words[2])
+                                        c=style.decimal(w.corrected), r=r, cert=words[1] if w.certified else words[2])
 
 
 def render_note(note: str, w, lang: str = "en") -> str:

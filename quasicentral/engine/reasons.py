@@ -30,6 +30,7 @@ class Code(str, Enum):
     # --- verified ----------------------------------------------------------------------------
     AGREES = "agrees"  # n, of, digits, confirmed, top, vacuous
     PROVED = "proved"  # numbers: the AGREES of the same points
+    DECIDED_TRUE = "decided-true"  # sympy decides the printed relation true from the assumptions
     ROUNDS_TO = "rounds-to"  # value, printed, places: an exact value that rounds to the printed decimal
     HOLDS = "holds"  # n, of, top: an inequality that holds at every point
     LIMIT_FOUND = "limit-found"  # how ("sympy" | "sequence"), value: a limit that agrees

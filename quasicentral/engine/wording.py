@@ -105,6 +105,9 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
     Code.PROVED: {
         "en": lambda f, s: "sympy proves the difference zero; " + f.sub("numbers"),
         "cs": lambda f, s: "sympy dokazuje, že rozdíl je nulový; " + f.sub("numbers")},
+    Code.DECIDED_TRUE: {
+        "en": lambda f, s: "sympy decides the printed relation true from the symbols' assumptions",
+        "cs": lambda f, s: "sympy rozhodne z předpokladů o symbolech, že vytištěný vztah platí"},
     Code.ROUNDS_TO: {
         "en": lambda f, s: (f"the exact value {s.decimal(f.value)} rounds to the printed {s.decimal(f.printed)} "
                             f"({f.places} decimal places)"),
@@ -325,9 +328,9 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                             f"({f.steps} kroků, v {f.n} bodech)")},
     Code.ORDER_GROWS: {
         "en": lambda f, s: (f"|lhs − rhs| / |O-term| grows as {s.expr(f.variable)} → {s.expr(f.point)} "
-                            f"(at least like the power {s.decimal(f.rate)} of the inverse distance)"),
+                            f"(at least like the power {s.num(f.rate, '.3g')} of the inverse distance)"),
         "cs": lambda f, s: (f"|levá − pravá| / |člen O| roste pro {s.expr(f.variable)} → {s.expr(f.point)} "
-                            f"(nejméně jako mocnina {s.decimal(f.rate)} převrácené vzdálenosti)")},
+                            f"(nejméně jako mocnina {s.num(f.rate, '.3g')} převrácené vzdálenosti)")},
     Code.BLOWS_UP: {
         "en": lambda f, s: f"grows without bound as {s.expr(f.variable)} → {s.expr(f.point)} (at {f.n} points)",
         "cs": lambda f, s: f"roste nade všechny meze pro {s.expr(f.variable)} → {s.expr(f.point)} (v {f.n} bodech)"},

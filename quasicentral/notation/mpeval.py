@@ -237,7 +237,7 @@ def _series(form, outer):
     def value(*vals):
         vals = vals[:len(outer)]
         a, b = bounds(*vals)
-        f = lambda k: term(k, *vals)  # noqa: E731
+        f = lambda k: term(mpmath.mpf(k), *vals)  # noqa: E731 - an mpf index: 1/j is no float division
         infinite = not (mpmath.isfinite(a) and mpmath.isfinite(b))
         if not infinite and abs(_integer(b) - _integer(a)) <= DIRECT_TERMS:
             ks = range(_integer(a), _integer(b) + 1)
