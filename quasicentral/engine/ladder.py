@@ -302,6 +302,19 @@ def _evaluate(ev: _Evaluator, pts: list, opts: Options):
     return rows, False, first_error
 
 
+#: functions with a jump or a kink where their argument crosses a value: an integrand holding one
+#: defeats a quadrature's error estimate
+NONSMOOTH = (sp.Abs, sp.sign, sp.Heaviside, sp.floor, sp.ceiling, sp.frac, sp.Piecewise, sp.Min, sp.Max, sp.Mod)
+
+
+def _nonsmooth_integrand(e: sp.Basic) -> str:
+    """The name of a non-smooth function inside an integrand of ``e`` ('' for none)."""
+    for integral in e.atoms(sp.Integral):
+        for f in integral.function.atoms(*NONSMOOTH):
+            return type(f).__name__
+    return ""
+
+
 def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
     disagree, unstable = [], 0
     for (kind, rel), (pt, row) in zip(classify(rows, opts), rows):
@@ -315,6 +328,12 @@ def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
         witness = witness_at(claim.quantity, p, d, pt, (row[-1].printed, row[-1].derived),
                              (row[0].printed, row[0].derived), ladder[-1], opts, rel, claim.at_most)
         method = Method.CERTIFIED if witness.certified else Method.NUMERIC
+        rough = _nonsmooth_integrand(p) or _nonsmooth_integrand(d)
+        if rough and not witness.certified:
+            # a quadrature across a jump or a kink is good to a few digits only: its difference
+            # is no refutation unless balls certify it
+            return Inconclusive(Method.NUMERIC, Reason.of(Code.NONSMOOTH_QUADRATURE, function=rough, count=len(disagree),
+                                                          points=n), n, ladder)
         reason = Reason.of(Code.FAILS_AT, count=len(disagree), points=n) if claim.at_most else \
             Reason.of(Code.DISAGREES, count=len(disagree), points=n, relative=rel)
         return Refuted(method, reason, n, ladder, witness=witness)

@@ -88,7 +88,9 @@ def _replace_at(e, path, new):
 
 
 def _bound(rel) -> set:
-    return {lim[0] for e in rel.atoms(sp.Integral, sp.Sum) for lim in e.limits}
+    """The variables a sum, a product, an integral or a limit binds (no printed slip makes x² of one)."""
+    return ({lim[0] for e in rel.atoms(sp.Integral, sp.Sum, sp.Product) for lim in e.limits}
+            | {e.args[1] for e in rel.atoms(sp.Limit)})
 
 
 def _replace_variable(e, var, new):

@@ -64,6 +64,7 @@ class Code(str, Enum):
     PROOF_CONTRADICTED = "proof-contradicted"  # verdict, numbers
     DIMENSIONS_DISAGREE = "dimensions-disagree"  # numbers (the AGREES), finding (a DimensionFinding's reason)
     STAGE_FAILED = "stage-failed"  # stage, error
+    NONSMOOTH_QUADRATURE = "nonsmooth-quadrature"  # function, count, points: uncertified differences of a rough integral
     OUT_OF_TIME = "out-of-time"  # stage, seconds, clock ("cpu" | "wall")
     NO_NUMERIC_FORM = "no-numeric-form"  # function
     ONE_POINT_DOMAIN = "one-point-domain"  # symbol

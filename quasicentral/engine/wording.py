@@ -226,6 +226,12 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                             + ("CPU time" if f.clock == "cpu" else "time") + " (raise --timeout to allow more)"),
         "cs": lambda f, s: (f"krok „{_STAGE_CS.get(f.stage, f.stage)}“ vyčerpal svých {s.num(f.seconds, 'g')} s "
                             + ("procesorového času" if f.clock == "cpu" else "času") + " (více dovolí --timeout)")},
+    Code.NONSMOOTH_QUADRATURE: {
+        "en": lambda f, s: (f"{f.count} of {f.points} points differ, but the integrand holds {s.text(f.function)} (a jump "
+                            "or a kink the quadrature is good to a few digits across) and no ball certifies it"),
+        "cs": lambda f, s: (f"{f.count} z {f.points} bodů se liší, integrand však obsahuje {s.text(f.function)} (skok "
+                            "nebo zlom, přes který je kvadratura přesná jen na několik číslic) a intervalová "
+                            "aritmetika rozdíl nepotvrdila")},
     Code.NO_NUMERIC_FORM: {
         "en": lambda f, s: f"no numeric evaluation of {s.text(f.function)}",
         "cs": lambda f, s: f"funkci {s.text(f.function)} nelze numericky vyčíslit"},

@@ -378,6 +378,31 @@ def _quadrature(integral: sp.Integral, outer: tuple[sp.Symbol, ...]):
     return value
 
 
+#: functions with a jump or a kink where their argument crosses zero (or an integer: floor)
+_KINKED = (sp.Abs, sp.sign, sp.Heaviside)
+
+
+def _breaks(f: sp.Expr, var: sp.Symbol) -> list:
+    """Where ``f`` has a jump or a kink along its path: the zeros in ``var`` of the arguments of
+    |·|, sign and Heaviside that sympy can solve (polynomials of degree ≤ 2 in the variable)."""
+    out = []
+    for g in f.atoms(*_KINKED):
+        arg = g.args[0]
+        if var in arg.free_symbols and arg.is_polynomial(var) and sp.degree(arg, var) <= 2:
+            out += sp.solve(arg, var)
+    return list(dict.fromkeys(out))
+
+
+def _inside(c, a, b) -> bool:
+    """Is the break ``c`` real and strictly between the ends (finite, in either order)?"""
+    if not (mpmath.isfinite(c) and mpmath.isfinite(a) and mpmath.isfinite(b)):
+        return False
+    if abs(mpmath.im(c)) > 0 or mpmath.im(a) != 0 or mpmath.im(b) != 0:
+        return False
+    lo, hi = sorted((mpmath.re(a), mpmath.re(b)))
+    return lo < mpmath.re(c) < hi
+
+
 @lru_cache(maxsize=2048)
 def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singular: bool):
     """One piece's value at the values of its parameters (one function per piece, so that its
@@ -398,7 +423,8 @@ def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singu
         if not compiled:
             x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
             compiled.extend((mp_lambdify((x,) + params, integral.function.xreplace({var: x})),
-                             mp_lambdify(params, lo), mp_lambdify(params, hi)))
+                             mp_lambdify(params, lo), mp_lambdify(params, hi),
+                             [mp_lambdify(params, r) for r in _breaks(integral.function, var)]))
         return compiled
 
     if ball is None:
@@ -409,8 +435,13 @@ def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singu
             got = _ball_quadrature(ball, params, vals)
             if got is not None:
                 return got
-        body, lower, upper = mpmath_form()
-        return _quad(lambda z: body(z, *vals), [lower(*vals), upper(*vals)], singular=singular)
+        body, lower, upper, breaks = mpmath_form()
+        a, b = lower(*vals), upper(*vals)
+        inner = sorted({mpmath.re(c) for c in (r(*vals) for r in breaks) if _inside(c, a, b)})
+        if inner:  # a jump or a kink of the integrand: each smooth stretch on its own
+            ends = [a, *inner, b] if a < b else [a, *reversed(inner), b]
+            return mpmath.fsum(_quad(lambda z: body(z, *vals), [u, w], singular=singular) for u, w in zip(ends, ends[1:]))
+        return _quad(lambda z: body(z, *vals), [a, b], singular=singular)
 
     def value(*vals):
         # remembered: a printed integral that is also the derived one (or an erratum's printed
