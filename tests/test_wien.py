@@ -137,3 +137,22 @@ def test_an_indefinite_integral_states_its_derivative():
     assert sp.simplify(claim.printed - claim.derived) == 0
     (plain,) = identity_claims([sp.Eq(sp.Integral(sp.cos(x), (x, 0, 1)), sp.sin(1), evaluate=False)])
     assert plain.quantity.code is Code.Q_SIDES
+
+
+def test_a_folders_figures_are_bounded(tmp_path, monkeypatch):
+    """figures.py is a folder's own code: a sleep there ends as a TextError naming the file."""
+    import types
+
+    from quasicentral.engine.texts import TextError
+    from quasicentral.studies import figures
+
+    class Text:
+        root = tmp_path
+
+        @staticmethod
+        def figures_module():
+            return types.SimpleNamespace(FIGURES=(lambda: __import__("time").sleep(30),))
+
+    monkeypatch.setattr(figures, "FIGURE_SECONDS", 0.5)
+    with pytest.raises(TextError, match="figures.py: its figures took more than"):
+        figures.of_text(Text())

@@ -71,11 +71,26 @@ def measured_names() -> list[str]:
     return [p.stem for p in sorted(MEASUREMENTS.glob("*.csv"))]
 
 
+#: the most time (wall clock and CPU) a folder's ``figures.py`` may take to make its figures
+FIGURE_SECONDS = 120.0
+
+
 def of_text(text) -> list[Figure | MeasuredChart]:
     """The figures of a text (:class:`quasicentral.engine.texts.Text`): those its folder's
-    ``figures.py`` lists in ``FIGURES``; none without one."""
-    module = text.figures_module()
-    return [make() for make in getattr(module, "FIGURES", ())] if module is not None else []
+    ``figures.py`` lists in ``FIGURES``; none without one.  The module is a folder's own code:
+    its import and its figures are bounded by :data:`FIGURE_SECONDS` (a loop or a sleep there
+    is a :class:`~quasicentral.engine.texts.TextError` naming the file, never a hang)."""
+    from quasicentral.engine.texts import TextError
+    from quasicentral.notation.timelimit import CPU, WALL, TimeLimitExceeded, time_limit
+
+    try:
+        with time_limit(FIGURE_SECONDS, WALL) as wall, time_limit(FIGURE_SECONDS, CPU) as cpu:
+            module = text.figures_module()
+            return [make() for make in getattr(module, "FIGURES", ())] if module is not None else []
+    except TimeLimitExceeded as exc:
+        if (wall is not None and wall.owns(exc)) or (cpu is not None and cpu.owns(exc)):
+            raise TextError(f"{text.root / 'figures.py'}: its figures took more than {FIGURE_SECONDS:g} s") from None
+        raise
 
 
 def to_csv(fig: Figure) -> str:
