@@ -29,7 +29,8 @@ from dataclasses import replace
 import sympy as sp
 
 from quasicentral.engine import asymptotic, rounding
-from quasicentral.engine.claims import CannotCompare, Claim, HoldsAsPrinted, claims_for, decided  # noqa: F401
+from quasicentral.engine.claims import (CannotCompare, Claim, HoldsAsPrinted, claims_for, decided,  # noqa: F401
+                                        doit_derivatives)
 from quasicentral.engine.dimensions import check_relation
 from quasicentral.engine.ladder import numeric
 from quasicentral.engine.options import Options
@@ -76,7 +77,13 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
         return replace(combine(verdicts), dimensions=findings)
     if failed is not None:
         return unsettled(Reason.of(Code.DERIVATION_FAILED, error=failed))
-    if derivation.mode is Mode.IDENTITY and asymptotic.passage_relation(printed):
+    if derivation.mode is not Mode.IDENTITY and asymptotic.passage_relation(printed):
+        if derivation.mode is not Mode.SUBSTITUTE or not isinstance(result, dict):
+            return unsettled(Reason.of(Code.NO_NUMERIC_FORM, function="O"))
+        # an expansion of the derived model: the printed relation with the model put in
+        model = dict(result)
+        printed = [doit_derivatives(doit_derivatives(rel).subs(model)) for rel in printed]
+    if asymptotic.passage_relation(printed):
         try:
             return replace(asymptotic.check(printed, derivation.domain, label, opts, table), dimensions=findings)
         except Exception as exc:  # noqa: BLE001 - a failure of the passage is this entry's

@@ -51,7 +51,13 @@ class HoldsAsPrinted(Exception):
 
 
 def doit_derivatives(e):
-    return e.replace(lambda a: isinstance(a, sp.Derivative), lambda a: a.doit()) if e.has(sp.Derivative) else e
+    """Derivatives carried out, and a derivative at a point (``Subs``) too — its terms then
+    show, so that a value that is exactly 0 is judged against them."""
+    if e.has(sp.Derivative):
+        e = e.replace(lambda a: isinstance(a, sp.Derivative), lambda a: a.doit())
+    if e.has(sp.Subs):
+        e = e.replace(lambda a: isinstance(a, sp.Subs), lambda a: a.doit())
+    return e
 
 
 def solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
@@ -184,10 +190,12 @@ def _condition_claims(printed: list, result, unknowns=None) -> list[Claim]:
     if substituted != q or len(printed) != 1:
         return [Claim(substituted, sp.Integer(0), quantity, sp.Abs(q))]
     f = doit_derivatives(printed[0].lhs - printed[0].rhs)
+    # any symbol of the condition will do: solved for it, the points satisfy the premise; the
+    # derivation's unknown, else one the quantity shares, samples where the text means
     candidates = [u for u in (unknowns or ()) if u in f.free_symbols] or \
         sorted(f.free_symbols & q.free_symbols, key=str) or sorted(f.free_symbols, key=str)
-    if len(candidates) != 1:
-        raise CannotCompare(Reason.of(Code.CONDITION_UNKNOWN, symbols=tuple(str(c) for c in candidates)))
+    if not candidates:
+        raise CannotCompare(Reason.of(Code.CONDITION_UNKNOWN, symbols=()))
     return [Claim(q, sp.Integer(0), quantity, None, implicit=(candidates[0], f))]
 
 

@@ -173,6 +173,27 @@ def verify_table(doc: dict) -> str:
     return _table(["id", "status", "verdict", "method", "detail"], rows) + tail
 
 
+def _short_number(s: str, digits: int = 10) -> str:
+    """A witness value in ``digits`` significant digits, its exponent and its imaginary part
+    kept (cutting the string would drop them: 1.84e-16 must not read 1.84).
+
+    >>> _short_number("1.8409926290586405123e-16"), _short_number("-0.75012152623546089 + 1.79811868757946419i")
+    ('1.840992629e-16', '-0.7501215262 + 1.798118688i')
+    """
+    from decimal import Decimal, InvalidOperation
+
+    def one(x: str) -> str:
+        try:
+            return format(Decimal(x), f".{digits}g")
+        except InvalidOperation:
+            return x
+    for sep in (" + ", " - "):
+        head, found, tail = s.rpartition(sep)
+        if found and tail.endswith("i"):
+            return f"{one(head)}{sep}{one(tail[:-1])}i"
+    return one(s)
+
+
 def errata_table(doc: dict) -> str:
     crows = [[c["id"], c["kind"], str(len(c["displays"])), c["title"][:60]] for c in doc["causes"]]
     out = f"Root causes ({len(doc['causes'])} over {len(doc['errata'])} errata)\n" + _table(
@@ -182,7 +203,8 @@ def errata_table(doc: dict) -> str:
     rows = []
     for r in doc["errata"]:
         w = r["witness"]
-        wit = "" if not w else (f"printed {w['printed'][:18]} vs {w['corrected'][:18]}" + (" (certified)" if w["certified"] else ""))
+        wit = "" if not w else (f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}"
+                                + (" (certified)" if w["certified"] else ""))
         rows.append([r["id"], ",".join(r["cause"]), r["status"], wit])
     out += "\n\nErrata\n" + _table(["id", "cause", "status", "witness"], rows)
     crow = [[r["id"], r["suspicion"][:50], r["status"]] for r in doc["cleared"]]

@@ -307,6 +307,10 @@ def _evaluate(ev: _Evaluator, pts: list, opts: Options):
 NONSMOOTH = (sp.Abs, sp.sign, sp.Heaviside, sp.floor, sp.ceiling, sp.frac, sp.Piecewise, sp.Min, sp.Max, sp.Mod)
 
 
+#: the relative difference beyond which a rough integral's difference is no quadrature error
+NONSMOOTH_TRUSTED = 1e-2
+
+
 def _nonsmooth_integrand(e: sp.Basic) -> str:
     """The name of a non-smooth function inside an integrand of ``e`` ('' for none)."""
     for integral in e.atoms(sp.Integral):
@@ -329,7 +333,7 @@ def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
                              (row[0].printed, row[0].derived), ladder[-1], opts, rel, claim.at_most)
         method = Method.CERTIFIED if witness.certified else Method.NUMERIC
         rough = _nonsmooth_integrand(p) or _nonsmooth_integrand(d)
-        if rough and not witness.certified:
+        if rough and not witness.certified and rel < NONSMOOTH_TRUSTED:
             # a quadrature across a jump or a kink is good to a few digits only: its difference
             # is no refutation unless balls certify it
             return Inconclusive(Method.NUMERIC, Reason.of(Code.NONSMOOTH_QUADRATURE, function=rough, count=len(disagree),

@@ -69,7 +69,7 @@ class Code(str, Enum):
     NO_NUMERIC_FORM = "no-numeric-form"  # function
     ONE_POINT_DOMAIN = "one-point-domain"  # symbol
     CONDITION_UNSOLVED = "condition-unsolved"  # unknown, count
-    CONDITION_UNKNOWN = "condition-unknown"  # symbols: an implicit condition in none or several of them
+    CONDITION_UNKNOWN = "condition-unknown"  # symbols: an implicit condition in no symbol
     ASYMPTOTIC_WITHOUT_LIMIT = "asymptotic-without-limit"
     NOTATION_ONLY = "notation-only"
     LIMIT_UNDECIDED = "limit-undecided"  # variable, point

@@ -244,10 +244,8 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "cs": lambda f, s: (f"podmínku šlo vyřešit vzhledem k {s.expr(f.unknown)} jen v {f.count} bodech: "
                             "příliš málo bodů, kde platí")},
     Code.CONDITION_UNKNOWN: {
-        "en": lambda f, s: ("an implicit condition in " + (", ".join(map(s.expr, f.symbols)) or "no symbol")
-                            + ": the derivation's unknowns=(…) names the one it is solved for"),
-        "cs": lambda f, s: ("implicitní podmínka v " + (", ".join(map(s.expr, f.symbols)) or "žádném symbolu")
-                            + ": proměnnou, vůči níž se řeší, udává unknowns=(…) odvození")},
+        "en": lambda f, s: "an implicit condition in no symbol: nothing to solve it for",
+        "cs": lambda f, s: "implicitní podmínka bez symbolu: není podle čeho ji řešit"},
     Code.ASYMPTOTIC_WITHOUT_LIMIT: {
         "en": lambda f, s: "an asymptotic form (an O-term) without a stated limit: nothing to evaluate",
         "cs": lambda f, s: "asymptotický tvar (člen O) bez udané limity: není co vyčíslit"},
