@@ -156,3 +156,25 @@ def test_a_folders_figures_are_bounded(tmp_path, monkeypatch):
     monkeypatch.setattr(figures, "FIGURE_SECONDS", 0.5)
     with pytest.raises(TextError, match="figures.py: its figures took more than"):
         figures.of_text(Text())
+
+
+def test_an_o_term_has_no_dimension_of_its_own():
+    from quasicentral.engine.dimensions import check_relation
+    from quasicentral.notation.symbols import Landau
+    from quasicentral.notation.units import parse_dim
+
+    nu, T, u = sp.symbols("nu T u", positive=True)
+    dims = {nu: parse_dim("1/s"), T: parse_dim("K"), u: parse_dim("K/s^2")}
+    assert not check_relation(sp.Eq(u, nu**2 * T + Landau(nu**3, nu, 0)), dims).inconsistent
+    assert check_relation(sp.Eq(u, nu * T + Landau(nu**3, nu, 0)), dims).inconsistent  # the rest still counts
+
+
+def test_a_derivative_at_a_point_that_is_zero_is_judged_against_its_terms():
+    """Subs(Derivative(…), t, t0) = 0 — the top of a trajectory — verifies, never 'unstable'."""
+    from quasicentral.engine.claims import doit_derivatives
+
+    t, k, g, v = sp.symbols("t k g v", positive=True)
+    y = ((v + g / k) / k) * (1 - sp.exp(-k * t)) - g * t / k
+    at_top = sp.Subs(sp.Derivative(y, t), t, sp.log(1 + k * v / g) / k)
+    done = doit_derivatives(at_top)
+    assert not done.has(sp.Subs, sp.Derivative) and sp.simplify(done) == 0

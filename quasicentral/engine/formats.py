@@ -182,6 +182,9 @@ def _short_number(s: str, digits: int = 10) -> str:
     """
     from decimal import Decimal, InvalidOperation
 
+    if not isinstance(s, str):  # not a number (an erratum whose witness could not be computed)
+        return str(s)[:18]
+
     def one(x: str) -> str:
         try:
             return format(Decimal(x), f".{digits}g")
