@@ -101,17 +101,29 @@ def _stage(out: Path, build: Path, name: str) -> None:
             copy(f, build / "figures" / f.name)
 
 
+#: the last pass's word that the cross-references have not settled, and how often to go on then
+UNSETTLED = "Rerun to get cross-references right"
+UNSETTLED_RERUNS = 2
+
+
 def _latexmk(build: Path, name: str, log: Path):
     env = {**os.environ, "SOURCE_DATE_EPOCH": "0", "FORCE_SOURCE_DATE": "1", **SANDBOX}
     cmd = ["latexmk", "-norc", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "-file-line-error",
            "-silent", name]
-    try:
-        proc = subprocess.run(cmd, cwd=build, capture_output=True, text=True, env=env, timeout=600)
-    except FileNotFoundError:
-        raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
-    except subprocess.TimeoutExpired:
-        raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
     built_log = build / f"{name[:-4]}.log"
+    for attempt in range(1 + UNSETTLED_RERUNS):
+        try:
+            proc = subprocess.run(cmd if attempt == 0 else cmd[:1] + ["-g"] + cmd[1:], cwd=build, capture_output=True,
+                                  text=True, env=env, timeout=600)
+        except FileNotFoundError:
+            raise LatexError("latexmk is not installed (run ./setup.sh)", log) from None
+        except subprocess.TimeoutExpired:
+            raise LatexError(f"LaTeX did not finish within 600 s: see {log}", log) from None
+        # latexmk may stop while the cross-references still move (seen now and then on a busy
+        # machine, never on a quiet one): one more pass, forced, settles them
+        if proc.returncode != 0 or not built_log.is_file() or \
+                UNSETTLED not in built_log.read_text(encoding="utf-8", errors="replace"):
+            break
     problems = log_problems(built_log.read_text(encoding="utf-8", errors="replace")) if built_log.is_file() else []
     return proc, problems
 
