@@ -178,3 +178,27 @@ def test_a_derivative_at_a_point_that_is_zero_is_judged_against_its_terms():
     at_top = sp.Subs(sp.Derivative(y, t), t, sp.log(1 + k * v / g) / k)
     done = doit_derivatives(at_top)
     assert not done.has(sp.Subs, sp.Derivative) and sp.simplify(done) == 0
+
+
+@pytest.mark.parametrize("literal", ["abc", "1e999999999", "nan", "1e1001"])
+def test_a_decimal_that_is_no_number_or_too_large_is_refused(literal):
+    """A decimal literal (a transcription's, or approx =) is a number of bounded size: a power
+    of ten of a billion digits would hang the reader."""
+    from quasicentral.notation.transcription import decimal_literal
+
+    with pytest.raises(ValueError):
+        decimal_literal(literal)
+    assert decimal_literal("1.2e-3") == sp.Rational(12, 10000)
+
+
+def test_a_bad_approx_names_its_file_and_line(tmp_path):
+    import shutil
+
+    from quasicentral.engine.catalog import CatalogError
+
+    folder = tmp_path / "w"
+    shutil.copytree(WIEN, folder)
+    catalog = folder / "catalog" / "wien.toml"
+    catalog.write_text(catalog.read_text().replace('approx = "4.965114"', 'approx = "1e999999"'), encoding="utf-8")
+    with pytest.raises((CatalogError, qc.InputError), match=r"wien\.toml:\d+: wien:3: approx"):
+        qc.load_text(folder, workspace_=qc.Workspace()).verify(cache=False)

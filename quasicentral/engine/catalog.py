@@ -326,6 +326,11 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
     for key in ("note", "url", "kind", "semantic", "approx"):
         if key in raw and not isinstance(raw[key], str):
             raise CatalogError(f"{locate(path, 'equation', i, key)}: {eid}: {key} is a string")
+    if raw.get("approx", "").strip():
+        try:
+            decimal_literal(raw["approx"])
+        except ValueError as exc:
+            raise CatalogError(f"{locate(path, 'equation', i, 'approx')}: {eid}: approx: {exc}") from None
     if "number" in raw and (not isinstance(raw["number"], (str, int)) or isinstance(raw["number"], bool)):
         raise CatalogError(f"{here}: {eid}: number is a string such as \"12\"")
     if raw.get("kind", "identity") not in KINDS:

@@ -322,7 +322,7 @@ def _limit(form, outer):
 def _continuous_value(g, x0, sides):
     """g(x0) where g is continuous there: finite at x0 and, a step h = 10^(−dps/3)·max(1, |x0|)
     away on each side of the limit, within 10^(−dps/4) (relative) of it — three evaluations
-    instead of an extrapolation's hundreds (a Jacobian function at a complex point: 18 s → 0.1 s).
+    instead of an extrapolation's hundreds (DLMF 22.5.1's limit at K + iK′: 37 s → 4 s for the entry).
     None where g is not evaluable at x0 (0/0, a pole) or jumps there: the sequences decide."""
     if not mpmath.isfinite(x0):
         return None
@@ -378,7 +378,7 @@ def _quadrature(integral: sp.Integral, outer: tuple[sp.Symbol, ...]):
     return value
 
 
-#: functions with a jump or a kink where their argument crosses zero (or an integer: floor)
+#: functions with a jump or a kink where their argument crosses zero
 _KINKED = (sp.Abs, sp.sign, sp.Heaviside)
 
 

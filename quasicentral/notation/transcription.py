@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from types import MappingProxyType
 import ast
+import re
 from fractions import Fraction
 
 import sympy as sp
@@ -210,11 +211,14 @@ class _Builder:
             return sp.true if v else sp.false
         if isinstance(v, int):
             return sp.Integer(v)
-        if isinstance(v, float):
-            return decimal_literal(ast.get_source_segment(self.source, node) or repr(v))
-        if isinstance(v, complex):
-            imag = ast.get_source_segment(self.source, node) or repr(v.imag)
-            return sp.I * decimal_literal(imag.rstrip("jJ") or "1")
+        try:
+            if isinstance(v, float):
+                return decimal_literal(ast.get_source_segment(self.source, node) or repr(v))
+            if isinstance(v, complex):
+                imag = ast.get_source_segment(self.source, node) or repr(v.imag)
+                return sp.I * decimal_literal(imag.rstrip("jJ") or "1")
+        except ValueError as exc:
+            _fail(node, str(exc))
         _fail(node, f"a {type(v).__name__} constant is not allowed here")
 
     def power(self, node, a, b):
@@ -281,9 +285,20 @@ def decimal_literals(text: str) -> dict:
     return out
 
 
+#: the largest power of ten a decimal literal may write (1e999999999 would be a billion digits)
+MAX_DECIMAL_EXPONENT = 1000
+
+
 def decimal_literal(text: str) -> sp.Rational:
-    """The exact rational a decimal literal writes: '0.1' → 1/10, '1e-3' → 1/1000."""
-    f = Fraction(text.replace("_", ""))
+    """The exact rational a decimal literal writes: '0.1' → 1/10, '1e-3' → 1/1000; a ValueError
+    for anything else, or for a power of ten beyond :data:`MAX_DECIMAL_EXPONENT`."""
+    text = text.strip().replace("_", "")
+    mantissa, _, exponent = text.lower().partition("e")
+    if not re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)", mantissa) or (exponent and not re.fullmatch(r"[+-]?\d{1,6}", exponent)):
+        raise ValueError(f"{text!r} is not a decimal number such as 4.965114 or 1.2e-3")
+    if exponent and abs(int(exponent)) > MAX_DECIMAL_EXPONENT or len(mantissa) > MAX_DECIMAL_EXPONENT:
+        raise ValueError(f"{text!r}: a decimal number's power of ten is at most {MAX_DECIMAL_EXPONENT} here")
+    f = Fraction(text)
     return sp.Rational(f.numerator, f.denominator)
 
 
