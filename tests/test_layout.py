@@ -172,3 +172,22 @@ def test_no_import_cycle():
         if m not in state:
             visit(m)
     assert not cycles, cycles
+
+
+#: The sizes a reader can hold in mind (issue 26): a module does one job, a function one step.
+#: The shipped texts' derivation modules are not counted — they are data, and follow their
+#: paper's sections (brepta1953/s5.py is section 5), as ``MODULES`` leaves them out.
+MAX_MODULE_LINES = 600
+MAX_FUNCTION_LINES = 80
+
+
+@pytest.mark.parametrize("module,path", MODULES, ids=[m for m, _ in MODULES])
+def test_module_and_function_sizes(module, path):
+    source = path.read_text()
+    lines = source.count("\n") + (not source.endswith("\n"))
+    assert lines <= MAX_MODULE_LINES, f"{module} has {lines} lines (at most {MAX_MODULE_LINES}): split it along its jobs"
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            size = node.end_lineno - node.lineno + 1
+            assert size <= MAX_FUNCTION_LINES, (
+                f"{module}.{node.name} (line {node.lineno}) has {size} lines (at most {MAX_FUNCTION_LINES})")

@@ -35,7 +35,8 @@ from quasicentral.engine.options import Options
 from quasicentral.notation import bridge
 from quasicentral.notation.symbols import D, Ec, Ej, Fj, Kc, arccotg
 from quasicentral.cli import main
-from quasicentral.documents.latex import Notation, display_rows, paper_latex, using
+from quasicentral.documents.breaking import display_rows
+from quasicentral.documents.latex import Notation, paper_latex, using
 from quasicentral.documents.prosetex import escape, text, with_math
 
 S = shipped.symbols("brepta1953")  # the printer speaks a text's notation: here Brepta's
@@ -90,7 +91,7 @@ def test_a_function_of_another_variable_has_leibniz_derivatives():
 def _balanced(row: str) -> bool:
     import re
 
-    from quasicentral.documents.latex import _mask_nested
+    from quasicentral.documents.breaking import _mask_nested
 
     depth = 0
     for m in re.finditer(r"\\left(?![A-Za-z])|\\right(?![A-Za-z])", _mask_nested(row)):

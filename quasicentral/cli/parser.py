@@ -84,7 +84,6 @@ def _add_text_options(parser: argparse.ArgumentParser, source: bool = True) -> N
 
 
 def build_parser() -> argparse.ArgumentParser:
-
     p = Parser(prog="quasicentral", description="Re-derive every equation of a text with sympy, check it with mpmath and ball "
                 "arithmetic, and record its errata (the shipped texts, or a text of your own: new-text).",
                 epilog="exit codes: 0 success, 1 an unexpected result (see each command), 2 bad usage or input\n"
@@ -95,6 +94,21 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--version", action="version", version=f"%(prog)s {version()}")
     sub = p.add_subparsers(dest="command", parser_class=Parser, metavar="COMMAND")
 
+    _add_verify(sub)
+    _add_errata(sub)
+    _add_mutate(sub)
+    _add_period(sub)
+    _add_trajectory(sub)
+    _add_figures(sub)
+    _add_charts(sub)
+    _add_report(sub)
+    _add_new_text(sub)
+    _add_scene(sub)
+    _add_catalog(sub)
+    return p
+
+
+def _add_verify(sub) -> None:
     v = _command(sub, "verify", "verify every catalog entry (printed vs derived)",
                  "Checks each equation as printed against its re-derivation: symbolically, then numerically on a\n"
                  "precision ladder (dps, 2·dps), certified by ball arithmetic where it can.  Verdicts are cached\n"
@@ -120,6 +134,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="worker processes, 1 to 64 (default: one per core, at most one per entry)")
     _add_timeout(v)
 
+
+def _add_errata(sub) -> None:
     e = _command(sub, "errata", "the errata found and the suspects cleared",
                  "Lists each registered erratum (the printed form refuted, the corrected one verified, with the\n"
                  "witness values) and each suspect that turned out right.  Exit 0 when every erratum still stands\n"
@@ -130,6 +146,8 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--no-cache", action="store_true", help="ignore cached verdicts (default: use them)")
     _add_timeout(e)
 
+
+def _add_mutate(sub) -> None:
     mu = _command(sub, "mutate", "seed typical typos into verified entries and measure the checker",
                   "Mutates every verified entry as a typesetter would (sign flip, exponent, factor 2, k <-> k^2,\n"
                   "dropped parentheses, swapped variables, a variable slipped for another of its dimension),\n"
@@ -147,9 +165,8 @@ def build_parser() -> argparse.ArgumentParser:
                     help="worker processes, 1 to 64 (default: one per core)")
     _add_timeout(mu)
 
-    _add_period(sub)
-    _add_trajectory(sub)
 
+def _add_figures(sub) -> None:
     fg = _command(sub, "figures", "reproduce the texts' missing figures (CSV data and PNG plots)",
                   "Writes each text's figures (those its folder's figures.py lists: for the shipped texts the\n"
                   "figures lost in print and the measured charts) as CSV data and PNG plots.  Each file is written through a temporary file and\n"
@@ -158,8 +175,8 @@ def build_parser() -> argparse.ArgumentParser:
     fg.add_argument("--out", default="figures", metavar="DIR", help="output directory, created if needed (default figures)")
     _add_text_options(fg)
 
-    _add_charts(sub)
 
+def _add_report(sub) -> None:
     rp = _command(sub, "report", "LaTeX reports (or handouts) regenerated from the verified derivations",
                   "Per text, the derivation report (printed vs re-derived, verdicts, steps, errata, cleared\n"
                   "suspects, figures, software versions) or a teaching handout with exercises, written into DIR\n"
@@ -179,6 +196,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_text_options(rp, source=False)
     _add_timeout(rp)
 
+
+def _add_new_text(sub) -> None:
     nt = _command(sub, "new-text", "write the skeleton of a text of your own (a folder) that verifies at once",
                   "Writes DIR/text.toml (the text's id, title, language and symbol table), DIR/catalog/ (what is\n"
                   "printed, transcribed), DIR/errata/ (one recorded erratum as an example) and DIR/motion.py (the\n"
@@ -187,8 +206,8 @@ def build_parser() -> argparse.ArgumentParser:
     nt.add_argument("dir", metavar="DIR", help="the new text's folder (must not exist, or be empty)")
     nt.add_argument("--id", dest="text_id", metavar="ID", help="the text's id (default: the folder's name)")
 
-    _add_scene(sub)
 
+def _add_catalog(sub) -> None:
     c = _command(sub, "catalog", "list the catalog: ids, dimensions, LaTeX-parser coverage",
                  "Lists every entry with its id (for verify --id), section and dimensions, and which of sympy's\n"
                  "LaTeX parsers read its printed form back correctly (each answer kept in the cache).",
@@ -198,7 +217,6 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--no-cache", action="store_true",
                    help="parse every entry's LaTeX anew (default: read the kept answers back)")
     _add_timeout(c)
-    return p
 
 
 def _add_period(sub) -> None:

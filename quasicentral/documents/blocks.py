@@ -10,8 +10,8 @@ import sys
 
 import sympy as sp
 
-from quasicentral.documents.latex import (display_rows, names_as_printed, notation, paper_latex, relation_lines,
-                                          visible_width, wrap_row)
+from quasicentral.documents.breaking import display_rows, relation_lines, visible_width, wrap_row
+from quasicentral.documents.latex import names_as_printed, notation, paper_latex
 from quasicentral.documents.prosetex import MATH_CHARS, escape, text
 from quasicentral.documents.prose import WORDS, TextProse
 from quasicentral.documents.steps import Step, paragraphs, ref_of  # noqa: F401 - re-exported

@@ -29,8 +29,10 @@ from quasicentral.notation.special.jacobi import (
     JacobiSC, JacobiSD, JacobiSN, JacobiZ,
 )
 from quasicentral.notation.special.legendre import (
-    AGM, EllipticD, EllipticE, EllipticEp, EllipticF, EllipticK, EllipticKp, EllipticPi,
-    HeumanLambda, JacobiZeta,
+    EllipticD, EllipticE, EllipticF, EllipticK, EllipticPi,
+)
+from quasicentral.notation.special.legendre_derived import (
+    AGM, EllipticEp, EllipticKp, HeumanLambda, JacobiZeta,
 )
 from quasicentral.notation.special.theta import (
     EllipticNome, JacobiTheta1, JacobiTheta2, JacobiTheta3, JacobiTheta4,

@@ -321,7 +321,7 @@ class JacobiZ(DLMFFunction):
     flint ``modular_theta(…, r=1)``.  Cut in k² ∈ [1, ∞) (from E/K).  Derivatives: of the definition.
 
     >>> import mpmath
-    >>> from quasicentral.notation.special.legendre import JacobiZeta
+    >>> from quasicentral.notation.special.legendre_derived import JacobiZeta
     >>> with mpmath.workdps(30):
     ...     phi, k = mpmath.mpf(7)/10, mpmath.mpf(4)/5
     ...     print(mpmath.almosteq(JacobiZ.mp(mpmath.ellipf(phi, k**2), k), JacobiZeta.mp(phi, k), 1e-28))
