@@ -1,5 +1,6 @@
 """Divergent printed forms, seen in a few evaluations: an integral whose integrand is not
-integrable at an end of its path, a series whose terms grow.  Each returns a
+integrable at an end of its path, a series whose terms grow, a two-sided limit whose one-sided
+limits differ.  Each returns a
 :class:`~quasicentral.engine.reasons.Reason` (or None where no divergence is seen)."""
 
 from __future__ import annotations
@@ -90,6 +91,44 @@ def _integral_end(function, x, outer, ends, pt) -> Reason | None:
     return None
 
 
+#: the first terms of a sum or product (and the last of a finite one) tested for a pole
+TERMS_TESTED = 8
+
+
+def undefined_term(expr: sp.Expr, pt: dict) -> Reason | None:
+    """A sum or product of ``expr`` with a term at a pole at ``pt`` (sympy's exact value of the
+    term is ∞ or undefined: 1/(j(j − 1)) at j = 1): the printed form has no value.  The first
+    and the last :data:`TERMS_TESTED` terms are tested, exactly."""
+    for sm in expr.atoms(sp.Sum, sp.Product):
+        if len(sm.limits) != 1:
+            continue
+        var, lo, hi = sm.limits[0]
+        term = sm.function.xreplace(pt)
+        lo, hi = sp.sympify(lo).xreplace(pt), sp.sympify(hi).xreplace(pt)
+        if term.free_symbols - {var} or not (lo.is_integer or lo.is_infinite) or not (hi.is_integer or hi.is_infinite):
+            continue
+        indices = []
+        if lo.is_finite:
+            indices += [lo + i for i in range(TERMS_TESTED)]
+        if hi.is_finite:
+            indices += [hi - i for i in range(TERMS_TESTED)]
+        if lo.is_finite and hi.is_finite:
+            indices = [k for k in indices if lo <= k <= hi]
+        for k in sorted(set(indices)):
+            try:
+                with time_limit(1.0) as limit:
+                    value = term.subs(var, k)
+            except TimeLimitExceeded as exc:
+                if limit is None or not limit.owns(exc):
+                    raise
+                break
+            except _ERRORS:
+                continue
+            if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+                return Reason.of(Code.UNDEFINED_TERM, variable=str(var), index=str(k))
+    return None
+
+
 def series_divergence(expr: sp.Expr, pt: dict) -> Reason | None:
     """Why an infinite series of ``expr`` diverges at ``pt`` (None if none is seen): the ratio
     test, |a(n+1)/a(n)| at n = 100 and 200 (30 digits), both above 1 + 1e-3 and not falling."""
@@ -112,4 +151,34 @@ def series_divergence(expr: sp.Expr, pt: dict) -> Reason | None:
         if all(x.is_number and x.is_finite for x in r) and r[0] > 1 + 1e-3 and r[1] >= r[0] * (1 - 1e-6):
             return Reason.of(Code.TERMS_GROW, variable=str(var), ratio100=str(sp.N(r[0], 4)),
                              ratio200=str(sp.N(r[1], 4)))
+    return None
+
+
+#: one-sided limits that differ by more than this (relative to max(1, their size)) are different
+SIDES_APART = 1e-12
+
+
+def limit_nonexistent(expr: sp.Expr, pt: dict) -> Reason | None:
+    """Why a two-sided limit of ``expr`` does not exist at ``pt`` (None if it is not seen): its
+    limits from the left and from the right, each where two sequences agree on it (30 digits),
+    differ.  A jump (atan(1/y) at 0) leaves the two-sided limit without a value, and a printed
+    value for it is false."""
+    for lim in expr.atoms(sp.Limit):
+        body, var, at, side = lim.args
+        if str(side) != "+-":
+            continue
+        outer = tuple(sorted(lim.free_symbols, key=str))
+        if any(s not in pt for s in outer):
+            continue
+        try:
+            with mpmath.workdps(30):
+                values = [bridge.mp_value(pt[s], 30) for s in outer]
+                left, right = (bridge.mp_function(sp.Limit(body, var, at, d), outer)(*values) for d in "-+")
+        except _ERRORS:
+            continue
+        if not (mpmath.isfinite(left) and mpmath.isfinite(right)):
+            continue
+        if abs(left - right) > SIDES_APART * max(1, abs(left), abs(right)):
+            return Reason.of(Code.NO_LIMIT, variable=str(var), point=sp.sstr(at.xreplace(pt)),
+                             left=mpmath.nstr(left, 6), right=mpmath.nstr(right, 6))
     return None

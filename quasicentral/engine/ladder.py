@@ -207,14 +207,26 @@ def _parameters(pt: dict) -> dict[str, str]:
 
 def _divergence(p: sp.Basic, pts: list, claim: Claim, opts: Options, before_numbers: bool) -> Verdict | None:
     """A printed integral that diverges (integrand ~ |x − e|^(−q), q ≥ 1, or decaying no faster
-    than 1/x at an infinite end), or a printed series whose terms grow, is refuted with that
-    reason: its quadratures or partial sums only return noise.  Where the numbers have failed,
-    one of the first four points showing it is enough; ``before_numbers``, the integrals alone
-    are tested (a series' test sums in sympy) and every one of the four points must show it."""
-    from quasicentral.engine.divergence import integral_divergence, series_divergence
+    than 1/x at an infinite end), a printed series whose terms grow, or a printed two-sided
+    limit whose sides differ, is refuted with that reason: its quadratures, partial sums or
+    sequences only return noise, or nothing.  Where the numbers have failed, one of the first
+    four points showing it is enough; ``before_numbers``, the integrals alone are tested (a
+    series' test sums in sympy) and every one of the four points must show it."""
+    from quasicentral.engine.divergence import (
+        integral_divergence, limit_nonexistent, series_divergence, undefined_term,
+    )
 
-    if not (p.has(sp.Integral) or (not before_numbers and p.has(sp.Sum))):
+    if not (p.has(sp.Integral) or (not before_numbers and p.has(sp.Sum, sp.Product, sp.Limit))):
         return None
+    for pt in (pts[:4] if not before_numbers else ()):
+        # a printed form without a value: a two-sided limit whose sides differ, a term at a pole
+        why = limit_nonexistent(p, pt) if p.has(sp.Limit) else None
+        why = why or (undefined_term(p, pt) if p.has(sp.Sum, sp.Product) else None)
+        if why is not None:
+            shown = f"{why['left']} (−), {why['right']} (+)" if why.code is Code.NO_LIMIT else "undefined"
+            w = Witness(parameters=_parameters(pt), printed=shown, corrected="", digits=0, certified=False,
+                        quantity=claim.quantity, relative_difference="inf", working_digits=opts.ladder[-1])
+            return Refuted(Method.NUMERIC, why, len(pts), opts.ladder, witness=w)
     seen = ((pt, integral_divergence(p, pt) or (None if before_numbers else series_divergence(p, pt)))
             for pt in pts[:4])
     if before_numbers:

@@ -78,13 +78,20 @@ def _walk(e, path=()):
             yield from _walk(a, path + (i,))
 
 
+def _remake(e, args):
+    """``e``'s kind of node over ``args``; a relation unevaluated, as the transcription reads it
+    (an evaluated Eq of an integral asks sympy's own quadrature for its truth: minutes for a
+    Heaviside integrand)."""
+    return e.func(*args, evaluate=False) if isinstance(e, sp.Rel) else e.func(*args)
+
+
 def _replace_at(e, path, new):
     """``e`` with the node at ``path`` replaced by ``new`` (one site only, unlike xreplace)."""
     if not path:
         return new
     args = list(e.args)
     args[path[0]] = _replace_at(args[path[0]], path[1:], new)
-    return e.func(*args)
+    return _remake(e, args)
 
 
 def _bound(rel) -> set:
@@ -103,7 +110,7 @@ def _replace_variable(e, var, new):
         return sp.Derivative(_replace_variable(e.expr, var, new), *e.variable_count)
     if isinstance(e, sp.Integral):
         return e
-    return e.func(*[_replace_variable(a, var, new) for a in e.args])
+    return _remake(e, [_replace_variable(a, var, new) for a in e.args])
 
 
 def mutations(rel: sp.Basic, table: SymbolTable):
@@ -149,7 +156,7 @@ def mutations(rel: sp.Basic, table: SymbolTable):
     free = sorted((a for a in rel.free_symbols if a not in variables and isinstance(a, sp.Symbol) and a not in _bound(rel)),
                   key=str)
     for a, b in zip(free, free[1:]):
-        yield "swapped variables", f"{a} <-> {b}", rel.xreplace({a: b, b: a})
+        yield "swapped variables", f"{a} <-> {b}", _remake(rel, [x.xreplace({a: b, b: a}) for x in rel.args])
     dims = table.dims
     for var in sorted(variables & rel.free_symbols, key=str):
         alike = [o for o, d in dims.items() if isinstance(o, sp.Symbol) and o != var and d == dims.get(var)
@@ -182,6 +189,8 @@ def mutants_of(entry: catalog.Entry, per_entry: int | None = None, roundings: bo
         for op, site, new in _valid(mutations(rel, entry.symbols)):
             if new == rel or new in (sp.true, sp.false) or not isinstance(new, sp.Basic):
                 continue
+            if isinstance(new, sp.Rel) and new.lhs == new.rhs:
+                continue  # the two sides made the same: nothing a checker could refute
             key = (i, sp.srepr(new))
             if key in seen:
                 continue

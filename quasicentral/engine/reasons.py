@@ -44,6 +44,8 @@ class Code(str, Enum):
     DIVERGES = "diverges"  # why: INTEGRAND_GROWS | TERMS_GROW
     INTEGRAND_GROWS = "integrand-grows"  # variable, end, order
     TERMS_GROW = "terms-grow"  # variable, ratio100, ratio200
+    NO_LIMIT = "no-limit"  # variable, point, left, right: a two-sided limit whose sides differ
+    UNDEFINED_TERM = "undefined-term"  # variable, index: a sum or product with a term at a pole
     DIMENSIONAL = "dimensional"  # numbers: None (not computed) | a verdict name | a Reason
     ROUNDS_OTHERWISE = "rounds-otherwise"  # printed, exact, places
     # --- inconclusive -----------------------------------------------------------------------

@@ -144,6 +144,16 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                             f"{s.decimal(f.ratio100)} at n = 100, {s.decimal(f.ratio200)} at n = 200): it does not converge"),
         "cs": lambda f, s: (f"členy řady v {s.expr(f.variable)} rostou (|a(n+1)/a(n)| = {s.decimal(f.ratio100)} "
                             f"pro n = 100, {s.decimal(f.ratio200)} pro n = 200): řada nekonverguje")},
+    Code.NO_LIMIT: {
+        "en": lambda f, s: (f"the printed limit does not exist: as {s.expr(f.variable)} → {s.expr(f.point)} from the "
+                            f"left it tends to {s.decimal(f.left)}, from the right to {s.decimal(f.right)}"),
+        "cs": lambda f, s: (f"vytištěná limita neexistuje: pro {s.expr(f.variable)} → {s.expr(f.point)} zleva se "
+                            f"blíží {s.decimal(f.left)}, zprava {s.decimal(f.right)}")},
+    Code.UNDEFINED_TERM: {
+        "en": lambda f, s: (f"the printed sum or product is undefined: its term at {s.expr(f.variable)} = "
+                            f"{s.expr(f.index)} divides by zero"),
+        "cs": lambda f, s: (f"vytištěný součet nebo součin není definován: jeho člen pro {s.expr(f.variable)} = "
+                            f"{s.expr(f.index)} dělí nulou")},
     Code.DIMENSIONAL: {
         "en": lambda f, s: "dimensionally inconsistent" + _numbers_en(f, s),
         "cs": lambda f, s: "rozměrově nekonzistentní" + _numbers_cs(f, s)},
