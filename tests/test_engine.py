@@ -782,3 +782,32 @@ def test_rationals_beyond_python_s_printable_integers_have_balls():
     y = sp.Symbol("y")
     ball = bridge.arb_eval(y / sp.Integer(10) ** 5000 + 1, {y: sp.Integer(1)}, prec=100)
     assert ball.is_finite() and ball.real.contains(1)
+
+
+# --- the gallery's findings, at the level they were fixed ------------------------------------
+@pytest.mark.parametrize("expr,value", [
+    (sp.Integral(sp.sin(sp.Symbol("t")) / sp.Symbol("t"), (sp.Symbol("t"), 0, sp.oo)), sp.pi / 2),
+    (sp.Integral(sp.besselj(0, 2 * sp.Symbol("t")), (sp.Symbol("t"), 0, sp.oo)), sp.Rational(1, 2)),
+    (sp.Integral(sp.Symbol("t") * sp.Symbol("u"), (sp.Symbol("t"), 0, sp.Symbol("u")), (sp.Symbol("u"), 0, 1)),
+     sp.Rational(1, 8)),
+    (sp.Sum(sp.Sum(1, (sp.Symbol("j"), 1, sp.Symbol("n"))), (sp.Symbol("n"), 1, 3)), sp.Integer(6)),
+])
+def test_oscillating_improper_nested_forms_have_their_values(expr, value):
+    """∫₀^∞ sin t/t (tanh–sinh alone gave 5.42), ∫₀^∞ J₀(2t), a double integral with an inner
+    limit in the outer variable, a double sum (sympy flattens it; rebuilding it recursed)."""
+    f = mpeval.mp_function(expr, ())
+    for dps in (30, 60):
+        with mpmath.workdps(dps):
+            assert abs(f() - bridge.mp_value(value, dps)) < mpmath.mpf(10) ** (-dps + 3)
+
+
+def test_a_limit_without_value_and_a_term_at_a_pole_are_seen():
+    from quasicentral.engine.divergence import limit_nonexistent, undefined_term
+
+    y, j, n = sp.symbols("y j n")
+    why = limit_nonexistent(sp.Limit(sp.atan(1 / y), y, 0, "+-"), {})
+    assert why is not None and why.code is Code.NO_LIMIT and why["left"] == "-1.5708"
+    assert limit_nonexistent(sp.Limit(sp.sin(y) / y, y, 0, "+-"), {}) is None
+    why = undefined_term(sp.Sum(1 / (j * (j - 1)), (j, 1, n)), {n: sp.Integer(5)})
+    assert why is not None and why.code is Code.UNDEFINED_TERM and why["index"] == "1"
+    assert undefined_term(sp.Sum(1 / (j * (j + 1)), (j, 1, n)), {n: sp.Integer(5)}) is None

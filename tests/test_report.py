@@ -26,6 +26,7 @@ import sys
 import time
 from pathlib import Path
 
+import mpmath
 import pytest
 import sympy as sp
 
@@ -405,9 +406,9 @@ def test_page_one_of_a_report_has_the_summary_and_the_errata_table(compiled):
             continue
         W = WORDS[name[-6:-4]]
         flat = _flat(first)
-        for key in ("summary", "count_checked", "count_errata", "errata_table"):
+        for key in ("summary", "count_checked", "count_errata", "found_title"):
             assert blocks.plain(W[key]) in flat, (name, key)
-        assert blocks.plain(W["table_printed"]) in flat and blocks.plain(W["table_corrected"]) in flat, name
+        assert blocks.plain(W["col_cause"]) in flat and blocks.plain(W["col_kind"]) in flat, name
 
 
 def _counts(tex: str) -> tuple[int, ...]:
@@ -621,3 +622,163 @@ def test_errata_with_one_cause_are_explained_once():
         tex = derivation_report._causes_section(groups, by_id, generic_prose("t"), lang)
         assert tex.count(title) == 1 and tex.count(note) == 1
         assert f"\\ref{{e:{steps[0].label}}}" in tex and f"\\ref{{e:{steps[1].label}}}" in tex
+
+
+
+# --- documents judged by reading: what a reader can check mechanically ------------------------
+@pytest.fixture(scope="module")
+def records():
+    return report.records_for(WS, TEXTS, Options())
+
+
+def _found_rows(tex: str) -> list[str]:
+    """The cause labels of page 1's table, in order."""
+    from quasicentral.documents.prose import WORDS
+
+    lang = "cs" if "\\usepackage[czech]{babel}" in tex else "en"
+    start = tex.index("\\subsection*{" + WORDS[lang]["found_title"] + "}")
+    end = tex.index("\\end{longtable}", start)
+    return re.findall(r"\(\\S\\,\\ref\{(c:[^{}]+)\}\)", tex[start:end])
+
+
+def test_page_one_has_one_row_per_cause_as_errata_json(generated, records):
+    """The causes on page 1 are those of ``errata --json`` (one row each), in both languages."""
+    from quasicentral.engine.formats import errata_document
+
+    _, docs, _ = generated
+    for rec in records:
+        doc = errata_document([s.entry for s in rec.steps], [s.outcome for s in rec.steps])
+        expected = [steps_mod.label_of(c["id"]) for c in doc["causes"]]
+        expected += [steps_mod.label_of(e["id"]) for e in doc["errata"] if not e["cause"]]
+        for lang in ("en", "cs"):
+            rows = _found_rows(docs[f"{rec.id}-report-{lang}.tex"])
+            assert sorted(r[2:] for r in rows) == sorted(expected), (rec.id, lang)
+
+
+def test_no_caret_no_internal_id_in_any_document(generated, records):
+    """A reader meets neither TeX's escaped caret nor the toolkit's ids of unnumbered displays."""
+    _, docs, _ = generated
+    for name, tex in docs.items():
+        assert "\\textasciicircum" not in tex, name
+        assert "\\textasciitilde" not in tex, name
+    for rec in records:
+        tags = steps_mod.citing(rec.steps)
+        pattern = re.compile(r"(?<![\w.:{/-])(" + "|".join(map(re.escape, tags)) + r")(?![\w-])")
+        for name, tex in docs.items():
+            if name.startswith(rec.id):
+                body = re.sub(r"\\(?:label|ref|hyperref|entrylabel)\{[^{}]*\}", "", tex)
+                assert not pattern.findall(body), (name, sorted(set(pattern.findall(body)))[:5])
+
+
+def _sections(tex: str) -> list[tuple[str, str]]:
+    """(title, body) of each section of a document, the body's visible text roughly."""
+    body = tex[tex.index("\\begin{document}"):]
+    out = []
+    for part in re.split(r"\\section\*?\{", body)[1:]:
+        title = part[:part.find("}")]
+        if "\\input{" in part:  # the software's versions, written apart (versions.tex)
+            continue
+        words = re.sub(r"\\[A-Za-z]+\*?(\[[^\]]*\])?", " ", part[part.find("}") + 1:])
+        out.append((title, " ".join(re.sub(r"[{}$\\&%~^_]", " ", words).split())))
+    return out
+
+
+def test_every_section_has_content_and_czech_says_what_english_says(generated):
+    """No section is a heading alone, and each Czech section is within a third of the length
+    of its English one (the same content, not a summary of it)."""
+    _, docs, _ = generated
+    for name, tex in docs.items():
+        if not name.endswith("-en.tex"):
+            continue
+        en, cs = _sections(tex), _sections(docs[name[:-7] + "-cs.tex"])
+        assert len(en) == len(cs), name
+        for (title, a), (_, b) in zip(en, cs):
+            assert len(a) > 20 and len(b) > 20, (name, title)
+            assert 2 / 3 <= len(b) / len(a) <= 3 / 2, (name, title, len(a), len(b))
+
+
+def test_students_handout_gives_no_answer(generated, records):
+    """The students' edition holds no corrected form of a misprint it sets and no computed
+    answer; the teacher's holds both."""
+    from quasicentral.documents.handout import exercises_for
+    from quasicentral.engine.exercises import ExerciseKind
+
+    _, docs, _ = generated
+    for rec in records:
+        exercises = exercises_for(rec)
+        assert rec.exercises, f"{rec.id} has an exercise bank"
+        for lang in ("en", "cs"):
+            students, teacher = docs[f"{rec.id}-handout-{lang}.tex"], docs[f"{rec.id}-teacher-{lang}.tex"]
+            for ex in exercises:
+                if ex.kind is ExerciseKind.MISPRINT:
+                    corrected = blocks.printed_display(ex.step.erratum.corrected_latex)
+                    assert corrected not in students and corrected in teacher, (rec.id, ex.spec.id)
+                if ex.kind is ExerciseKind.COMPUTE:
+                    shown = blocks.number(ex.answer, lang, ex.spec.digits)
+                    assert shown not in students and shown in teacher, (rec.id, ex.spec.id, shown)
+
+
+def test_exercise_answers_are_the_physics():
+    """The banks' answers, recomputed here from the physics by hand (mpmath): the period at 30°
+    and 90°, the amplitude at which T0 errs by 1 %, the halving time and length of the angular
+    momentum, the damped frequency of figs. 7 and 8, the critical damping."""
+    from quasicentral.engine.exercises import read_bank, settle
+
+    expected = {
+        "period-30": 4 * mpmath.sqrt(1 / mpmath.mpf("9.81")) * mpmath.ellipk(mpmath.sin(mpmath.pi / 12) ** 2),
+        "period-90": 4 * mpmath.sqrt(1 / mpmath.mpf("9.81")) * mpmath.ellipk(mpmath.mpf(1) / 2),
+        "one-percent": mpmath.findroot(lambda p: 2 / mpmath.pi * mpmath.ellipk(mpmath.sin(p / 2) ** 2) - 1.01, 0.4),
+        "half-time-linear": mpmath.log(2) / (2 * mpmath.mpf("0.4")),
+        "half-length-quadratic": mpmath.log(2) / mpmath.mpf("0.5"),
+        "damped-frequency": mpmath.sqrt(mpmath.mpf("9.84")),
+        "critical-damping": mpmath.sqrt(mpmath.mpf("9.81")),
+    }
+    got = {}
+    for rec in report.records_for(WS, TEXTS, Options()):
+        for ex in rec.exercises:
+            if ex.answer:
+                got[ex.spec.id] = ex
+    assert set(got) == set(expected)
+    for eid, value in expected.items():
+        assert got[eid].answer == mpmath.nstr(value, got[eid].spec.digits, min_fixed=-4, max_fixed=6), eid
+
+
+def test_a_bank_that_does_not_hold_is_refused(tmp_path):
+    """A derive exercise whose premises the result does not rest on, a misprint that is no
+    erratum, a compute exercise on an entry without its unknown: each one error naming the
+    file and the exercise."""
+    from quasicentral.engine.catalog import CatalogError
+    from quasicentral.engine.exercises import read_bank, settle
+
+    rec = next(r for r in report.records_for(WS, TEXTS, Options()) if r.id == "pendulum")
+    entries = dict(rec.text.entries)
+    statuses = {s.entry.id: s.outcome.status for s in rec.steps}
+    uses = {s.entry.id: s.uses for s in rec.steps}
+    bad = {
+        "derive": 'kind = "derive"\nentry = "pendulum:60"\npremises = ["pendulum:53"]',
+        "misprint": 'kind = "misprint"\nentry = "pendulum:60"',
+        "compute": 'kind = "compute"\nentry = "pendulum:60"\nunknown = "m"\nvalues = { l = "1", g = "9" }',
+        "no-entry": 'kind = "misprint"\nentry = "pendulum:nothing"',
+        "ref": 'kind = "misprint"\nentry = "pendulum:equation-of-motion"\nquestion.cs = "{ref:pendulum:zz}"',
+    }
+    for what, body in bad.items():
+        (tmp_path / "report.toml").write_text(f'[[exercise]]\nid = "x"\nquestion.en = "?"\n{body}\n')
+        with pytest.raises(CatalogError, match=r"report.toml, exercise 'x'"):
+            settle(read_bank(tmp_path, "mytext"), entries, statuses, uses, {})
+
+
+def test_figures_speak_the_documents_language(generated):
+    """A text's own figures are drawn per language (its axes and legend in Czech, a decimal
+    comma) and each document includes its own; the measured charts are the software note's."""
+    from quasicentral.studies import figures
+
+    _, docs, _ = generated
+    for t in TEXTS:
+        own = [f for f in figures.of_text(t) if isinstance(f, figures.Figure)]
+        assert own, t.id
+        for f in own:
+            for kind in ("report", "handout", "teacher"):
+                assert f"{{figures/{f.name}-cs.png}}" in docs[f"{t.id}-{kind}-cs.tex"], (t.id, f.name, kind)
+                assert f"{{figures/{f.name}.png}}" in docs[f"{t.id}-{kind}-en.tex"], (t.id, f.name, kind)
+            if f.kind is figures.Kind.CURVES:
+                assert f.said("labels", "cs") != f.labels and f.said("xlabel", "cs") != f.xlabel, f.name

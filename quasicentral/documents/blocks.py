@@ -291,7 +291,17 @@ def certified_mark(w, lang: str) -> str:
     return W["certified_yes"] if _wget(w, "certified") else W["certified_no"]
 
 
+#: the checker's name for the n-th time derivative of a function at a witness's point (phi_t1)
+_JET_PARAMETER = re.compile(r"^([A-Za-z]+)_t([0-4])$")
+_DOT_COMMANDS = ("", r"\dot", r"\ddot", r"\dddot", r"\ddddot")
+
+
 def _param_name(name: str) -> str:
+    """A witness's coordinate in the paper's notation: φ̇ for the checker's phi_t1."""
+    jet = _JET_PARAMETER.match(name)
+    if jet:
+        base, order = paper_latex(sp.Symbol(jet.group(1))), int(jet.group(2))
+        return f"{_DOT_COMMANDS[order]}{{{base}}}" if order else base
     return paper_latex(sp.Symbol(name))
 
 

@@ -12,6 +12,7 @@ from quasicentral.documents.blocks import (VERSIONS_FILE, aligned, certified_mar
 from quasicentral.documents.prosetex import clean_prose, escape, with_math
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
 from quasicentral.documents.steps import (CauseGroup, FigureItem, Step, TextRecords, caption, cause_groups, cause_note,
+                                          cite, citing, cleared_note,
                                           cause_title, entry_heading, erratum_note, figures_for, kind_name,
                                           section_title, sections_of, step_text)
 from quasicentral.engine.registry import Mode
@@ -26,8 +27,8 @@ def report_tex(rec: TextRecords, lang: str) -> str:
     groups = cause_groups(steps)
     parts = [preamble(lang, title, W["report"], prose), "\\begin{document}\n",
              title_block(title, W["report"])]
-    parts.append(_summary(steps, groups, lang))
-    parts.append(_errata_table(steps, lang))
+    parts.append(_summary(steps, groups, prose, lang))
+    parts.append(_found_table(groups, prose, lang))
     parts.append("\\clearpage\n\\tableofcontents\n\n")
     parts.append(_causes_section(groups, by_id, prose, lang))
     parts.append(_cleared_section(steps, prose, lang))
@@ -37,15 +38,17 @@ def report_tex(rec: TextRecords, lang: str) -> str:
             parts.append(W["report_intro"] + "\n\n")
         for st in group:
             parts.append(_report_entry(st, by_id, groups, prose, lang))
-    parts.append(figures_section(text, prose, lang, handout=False))
+    parts.append(figures_section(text, prose, lang))
     parts.append("\\appendix\n")
     parts.append(_method_section(steps, lang))
+    parts.append(_errata_table(steps, lang))
+    parts.append(software_note(text, prose, lang))
     parts.append(f"\\section{{{W['versions']}}}\n\\input{{{VERSIONS_FILE[:-4]}}}\n")
     parts.append("\\end{document}\n")
     return "".join(parts)
 
 
-def _summary(steps: list[Step], groups: list[CauseGroup], lang: str) -> str:
+def _summary(steps: list[Step], groups: list[CauseGroup], prose: TextProse, lang: str) -> str:
     W = WORDS[lang]
     counts: dict[str, int] = {}
     methods: dict[str, int] = {}
@@ -66,7 +69,10 @@ def _summary(steps: list[Step], groups: list[CauseGroup], lang: str) -> str:
             f"({W['section']}~\\ref{{sec:cleared}})" if counts.get("cleared") else "") + " \\\\",
         f"\\quad {W['count_inconclusive']} & {inconclusive} & \\\\",
     ]
+    story = [p for p in (prose.abstract.get(lang) or prose.intro.get(lang, ""),
+                         prose.source.get(lang) or W["source_generic"]) if p]
     out = [f"\\section*{{{W['summary']}}}\n\\phantomsection\\addcontentsline{{toc}}{{section}}{{{W['summary']}}}\n",
+           "".join(p + "\n\\medskip\n\n" for p in story),
            W["checked"].format(n=len(steps)) + "\n\n",
            "\\begin{center}\n\\begin{tabular}{@{}lrl@{}}\n\\toprule\n" + "\n".join(rows)
            + "\n\\bottomrule\n\\end{tabular}\n\\end{center}\n"]
@@ -82,10 +88,36 @@ def _cell(latex: str, width: int = 30) -> str:
     return "\\fit{$\\displaystyle " + gathered(printed_rows(latex, width)) + "$}"
 
 
+def _found_table(groups: list[CauseGroup], prose: TextProse, lang: str) -> str:
+    """Page 1's table: one row per cause (as ``errata --json`` lists them), its kind, the
+    displays it reaches and one witness in a few digits."""
+    W = WORDS[lang]
+    out = [f"\\subsection*{{{W['found_title']}}}\n"]
+    if not groups:
+        return "".join(out) + W["none_found"] + "\n\n"
+    out.append("{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.36\\linewidth}>{\\raggedright}p{0.15\\linewidth}"
+               ">{\\raggedright}p{0.17\\linewidth}>{\\raggedright\\arraybackslash}p{0.24\\linewidth}@{}}\n\\toprule\n"
+               f"{W['col_cause']} & {W['col_kind']} & {W['col_displays']} & {W['table_witness']} "
+               "\\\\\n\\midrule\n\\endhead\n")
+    for g in groups:
+        title = cause_title(g, prose, lang)
+        refs = join_refs([f"\\ref{{e:{s.label}}}" for s in g.steps], lang)
+        shown = next(((s, s.outcome.verdict.witness) for s in g.steps
+                      if getattr(s.outcome.verdict, "witness", None) is not None), None)
+        wit = ""
+        if shown is not None:
+            wit = W["witness_in"].format(ref=f"\\ref{{e:{shown[0].label}}}",
+                                         values=witness_short(shown[1], lang, point=False))
+        out.append(f"{title} (\\S\\,\\ref{{{g.label}}}) & {kind_name(g.kind, lang)} & {refs} & {wit} \\\\\n")
+    out.append("\\bottomrule\n\\end{longtable}\n}\n")
+    out.append(W["found_more"].format() + "\n\n")
+    return "".join(out)
+
+
 def _errata_table(steps: list[Step], lang: str) -> str:
     W = WORDS[lang]
     errata = [s for s in steps if s.is_erratum]
-    out = [f"\\subsection*{{{W['errata_table']}}}\n"]
+    out = [f"\\section{{{W['errata_table']}}}\\label{{sec:sidebyside}}\n"]
     if not errata:
         return "".join(out) + W["none_found"] + "\n\n"
     out.append("{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.09\\linewidth}p{0.31\\linewidth}"
@@ -104,6 +136,17 @@ def _errata_table(steps: list[Step], lang: str) -> str:
     return "".join(out)
 
 
+def software_note(text, prose: TextProse, lang: str) -> str:
+    """The toolkit's measurements (work–precision charts, timings) as an appendix of their own,
+    marked as being about the software, not the text."""
+    W = WORDS[lang]
+    studies = figures_for(text, prose, "study")
+    if not studies:
+        return ""
+    return (f"\\clearpage\n\\section{{{W['software_note']}}}\\label{{sec:software}}\n{W['software_note_intro']}  "
+            f"{W['studies_intro']}\n\n" + "".join(_figure_env(f, fp, lang) for f, fp in studies) + "\\clearpage\n")
+
+
 def _causes_section(groups: list[CauseGroup], by_id: dict[str, Step], prose: TextProse, lang: str) -> str:
     W = WORDS[lang]
     out = [f"\\section{{{W['errata']}}}\\label{{sec:errata}}\n"]
@@ -114,7 +157,7 @@ def _causes_section(groups: list[CauseGroup], by_id: dict[str, Step], prose: Tex
         refs = join_refs([f"\\ref{{e:{s.label}}}" for s in g.steps], lang)
         out.append(f"\\textbf{{{W['cause_affects']}:}} {refs}.  \\textbf{{{W['cause_kind']}:}} "
                    f"{kind_name(g.kind, lang)}.\n\n")
-        note = cause_note(g, prose, lang)
+        note = cause_note(g, prose, lang, citing(by_id.values()))
         if note:
             out.append(note + "\n\n")
     return "".join(out)
@@ -128,11 +171,17 @@ def _cleared_section(steps: list[Step], prose: TextProse, lang: str) -> str:
         return "".join(out) + W["none_found"] + "\n\n"
     for st in cleared:
         out.append(f"\\subsection*{{{pdf_safe(entry_heading(st, prose, lang))}}}\n")
-        own = prose.entry(st.entry.id).erratum.get(lang)
-        if lang == "en":
-            out.append(f"\\textbf{{{W['suspicion']}:}} " + with_math(clean_prose(st.cleared.suspicion)) + "\n\n")
-        note = own or (with_math(clean_prose(st.cleared.note)) if lang == "en" else "")
-        out.append(f"\\textbf{{{W['verdict']}:}} " + verdict_short(st, lang) + (" " + note if note else "") + "\n\n")
+        suspicion = st.cleared.suspicion_in(lang)
+        if suspicion:
+            out.append(f"\\textbf{{{W['suspicion']}:}} " + with_math(cite(clean_prose(suspicion), citing(steps)), lang=lang)
+                       + "\n\n")
+        tags = citing(steps)
+        note = cleared_note(st, lang, tags) if st.is_erratum else erratum_note(st, prose, lang, tags)
+        if st.is_erratum:  # the suspicion is unfounded, and the display wrong for another reason
+            verdict = W["cleared_yet_erratum"].format(ref=f"\\ref{{e:{st.label}}}")
+        else:
+            verdict = verdict_short(st, lang)
+        out.append(f"\\textbf{{{W['verdict']}:}} " + verdict + (" " + note if note else "") + "\n\n")
     return "".join(out)
 
 
@@ -181,14 +230,14 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
                 W["see_cause"].format(label=g.label) for g in mine) + "."
     out.append(verdict + "\n\n")
     if st.is_erratum and any(g.recorded for g in groups if st in g.steps):
-        note = erratum_note(st, prose, lang)  # this display's own words (the cause's are in its section)
+        note = erratum_note(st, prose, lang, citing(by_id.values()))  # its own words (the cause's are in its section)
         if note:
             out.append(note + "\n\n")
     # the step
     if st.derivation is not None:
         uses = [ref_of(by_id, u, handout=False) for u in st.uses if u in by_id]
         body = step_text(st, by_id, prose, lang, handout=False)
-        src = (f"({W['uses']} " + join_refs(uses, lang) + ")") if uses and lang == "en" else ""
+        src = (f"({W['uses']} " + join_refs(uses, lang) + ")") if uses else ""
         out.append(f"\\textbf{{{W['step']}:}} " + body + (" " + src if src else "") + "\n\n")
     return "".join(out)
 
@@ -220,6 +269,7 @@ def _method_section(steps: list[Step], lang: str) -> str:
 
 
 def _figure_env(fig: FigureItem, fp, lang: str) -> str:
+    fig = fig.in_lang(lang)
     # the paper's own figure numbers are in the caption: no LaTeX figure counter
     if fp is not None and fp.landscape:
         return ("\\begin{landscape}\n\\centering\n"
@@ -231,23 +281,11 @@ def _figure_env(fig: FigureItem, fp, lang: str) -> str:
             f"\\small {caption(fig, fp, lang)}\n\\end{{figure}}\n")
 
 
-def figures_section(text, prose: TextProse, lang: str, handout: bool) -> str:
+def figures_section(text, prose: TextProse, lang: str) -> str:
+    """The figures of the text (the toolkit's charts are the software note's)."""
     W = WORDS[lang]
     own = figures_for(text, prose, "text")
-    studies = [] if handout else figures_for(text, prose, "study")
-    if not own and not studies:
+    if not own:
         return ""  # a text without figures has no such section
-    out = [f"\\section{{{W['figures']}}}\n"]
-    if own:
-        if studies:
-            out.append(f"\\subsection{{{W['text_figures']}}}\n")
-        out.append(prose.figures_intro[lang] + "\n\n")
-        out += [_figure_env(f, fp, lang) for f, fp in own]
-        out.append("\\clearpage\n")
-    if studies:
-        out.append(f"\\subsection{{{W['studies']}}}\n{W['studies_intro']}\n\n")
-        out += [_figure_env(f, fp, lang) for f, fp in studies]
-        out.append("\\clearpage\n")
-    return "".join(out)
-
-
+    return (f"\\section{{{W['figures']}}}\n{prose.figures_intro[lang]}\n\n"
+            + "".join(_figure_env(f, fp, lang) for f, fp in own) + "\\clearpage\n")

@@ -5,27 +5,34 @@ exercises; the teacher's edition adds the solutions.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from enum import Enum
 
-from quasicentral.documents.blocks import paragraphs, pdf_safe, preamble, printed_display, ref_of, tagged_display, \
-    title_block
+import sympy as sp
+
+from quasicentral.documents.blocks import number, paragraphs, pdf_safe, preamble, printed_display, ref_of, \
+    tagged_display, title_block
 from quasicentral.documents.derivation_report import figures_section
-from quasicentral.documents.prosetex import clean_prose, escape
+from quasicentral.documents.latex import paper_latex
+from quasicentral.documents.prosetex import clean_prose, escape, with_math
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
-from quasicentral.documents.steps import (Step, TextRecords, cause_groups, cause_note, kind_name, section_title,
+from quasicentral.documents.steps import (Step, TextRecords, cause_groups, cause_note, citing, kind_name, section_title,
                                           sections_of, step_text)
+from quasicentral.engine.exercises import REF, ExerciseKind, ExerciseSpec
 from quasicentral.engine.verdict import Status
-
-
-class ExerciseKind(Enum):
-    DERIVE = "derive"  # derive an equation from the ones it rests on
-    ERRATUM = "erratum"  # find the misprint
 
 
 @dataclass(frozen=True)
 class Exercise:
+    """An exercise as the handout sets it: of the text's bank (``spec``, with its checked
+    ``answer``) or, for a text without one, chosen from its steps."""
+
     kind: ExerciseKind
     step: Step
+    spec: ExerciseSpec | None = None
+    answer: str = ""
+
+    @property
+    def level(self) -> int:
+        return self.spec.level if self.spec is not None else 1
 
 
 def shown_latex(st: Step) -> str:
@@ -45,8 +52,17 @@ def exercises_of(steps: list[Step]) -> list[Exercise]:
         if len(cand) > per:
             cand = [cand[round(i * (len(cand) - 1) / (per - 1))] for i in range(per)]
         out += [Exercise(ExerciseKind.DERIVE, s) for s in cand]
-        out += [Exercise(ExerciseKind.ERRATUM, s) for s in group if s.outcome.status is Status.ERRATUM][:2]
+        out += [Exercise(ExerciseKind.MISPRINT, s) for s in group if s.outcome.status is Status.ERRATUM][:2]
     return out
+
+
+def exercises_for(rec: TextRecords) -> list[Exercise]:
+    """The text's own bank where it has one (graded, checked by the engine), else exercises
+    chosen from its steps."""
+    if not rec.exercises:
+        return exercises_of(list(rec.steps))
+    by_id = {s.entry.id: s for s in rec.steps}
+    return [Exercise(ex.spec.kind, by_id[ex.spec.entry], ex.spec, ex.answer) for ex in rec.exercises]
 
 
 def handout_tex(rec: TextRecords, lang: str, solutions: bool = False) -> str:
@@ -64,26 +80,45 @@ def handout_tex(rec: TextRecords, lang: str, solutions: bool = False) -> str:
     parts.append(W["verified_by"].format(report=f"\\href{{{pdf}}}{{\\nolinkurl{{{pdf}}}}}") + "\n\n")
     if solutions:
         parts.append("\\emph{" + W["teacher_note"] + "}\n\n")
+    # in the students' edition an erratum set as an exercise is shown as printed, its correction
+    # left to them (the teacher's edition corrects it in place)
+    exercises = exercises_for(rec)
+    hidden = {} if solutions else _hidden(exercises, steps)
     for section, group in sections_of(steps):
         parts.append(f"\\section{{{pdf_safe(section_title(text, prose, section, lang))}}}\n")
         intro = prose.section_intro(section, lang)
         if intro:
             parts.append(intro + "\n\n")
         for i, st in enumerate(group):
-            parts.append(_handout_step(st, i, by_id, tags[st.entry.id], prose, lang))
-    exercises = exercises_of(steps)
+            parts.append(_handout_step(st, i, by_id, tags[st.entry.id], prose, lang, hidden.get(st.entry.id)))
     if exercises:
         parts.append(f"\\section{{{W['exercises']}}}\n\\begin{{enumerate}}\n")
         for n, ex in enumerate(exercises, 1):
             parts.append(f"\\item\\label{{ex:{n}}} " + _exercise(ex, by_id, lang))
         parts.append("\\end{enumerate}\n")
-    parts.append(figures_section(text, prose, lang, handout=True))
+    parts.append(figures_section(text, prose, lang))
     if exercises and solutions:
         parts.append(f"\\section{{{W['solutions']}}}\n")
         for n, ex in enumerate(exercises, 1):
             parts.append(f"\\subsection*{{{W['exercise']}~\\ref{{ex:{n}}}}}\n" + _solution(ex, by_id, prose, lang))
     parts.append("\\end{document}\n")
     return "".join(parts)
+
+
+def _hidden(exercises: list[Exercise], steps: list[Step]) -> dict[str, int]:
+    """The errata the students' edition shows as printed, each with the number of the exercise
+    that asks for it: a misprint set as an exercise, and every display of the same cause (its
+    correction would give the answer away)."""
+    groups = cause_groups(steps)
+    out: dict[str, int] = {}
+    for n, ex in enumerate(exercises, 1):
+        if ex.kind is ExerciseKind.MISPRINT:
+            for g in groups:
+                if ex.step in g.steps:
+                    for s in g.steps:
+                        out.setdefault(s.entry.id, n)
+            out.setdefault(ex.step.entry.id, n)
+    return out
 
 
 def _connect(st: Step, index: int, by_id: dict[str, Step], lang: str) -> str:
@@ -97,9 +132,15 @@ def _connect(st: Step, index: int, by_id: dict[str, Step], lang: str) -> str:
     return choices[index % len(choices)].format(refs=refs)
 
 
-def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose: TextProse, lang: str) -> str:
+def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose: TextProse, lang: str,
+                  exercise: int | None = None) -> str:
+    """One step told to a student; ``exercise``, the number of the exercise that asks for this
+    erratum's correction (then the display is shown as printed, and nothing more is said)."""
     W = WORDS[lang]
-    out = [_connect(st, index, by_id, lang) + "\n" + tagged_display(shown_latex(st), tag, f"h:{st.label}")]
+    shown = st.entry.latex if exercise is not None else shown_latex(st)
+    out = [_connect(st, index, by_id, lang) + "\n" + tagged_display(shown, tag, f"h:{st.label}")]
+    if exercise is not None:
+        return out[0] + "\\emph{" + W["erratum_exercise"].format(ref=f"\\ref{{ex:{exercise}}}") + "}\n\n"
     own = prose.entry(st.entry.id).step.get(lang)
     if own or (lang == "en" and st.derivation is not None):
         out.append((own or paragraphs(clean_prose(st.derivation.doc))) + "\n\n")
@@ -108,16 +149,33 @@ def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose:
         out.append("\\emph{" + W["erratum"].format(kind=kind_name(st.erratum.kind, lang)) + "}\n"
                    + printed_display(st.entry.latex))
     elif status is Status.CLEARED:
-        out.append("\\emph{" + W["cleared"] + "}\n\n")
+        doubt = st.cleared.suspicion_in(lang).rstrip(". ") if st.cleared is not None else ""
+        out.append("\\emph{" + (W["cleared_doubt"].format(doubt=with_math(clean_prose(doubt), lang=lang))
+                                 if doubt else W["cleared"]) + "}\n\n")
     elif status is Status.UNEXPECTED:
         out.append("\\emph{" + W["unverified"] + "}\n\n")
     return "".join(out)
 
 
+def _words(ex: Exercise, which: str, by_id: dict[str, Step], lang: str) -> str:
+    """An exercise's own question or solution in the language, its {ref:…} as the handout's
+    equation numbers."""
+    if ex.spec is None:
+        return ""
+    words = getattr(ex.spec, which).get(lang, "")
+    return REF.sub(lambda m: ref_of(by_id, m.group(1), handout=True), words)
+
+
 def _exercise(ex: Exercise, by_id: dict[str, Step], lang: str) -> str:
     W, st = WORDS[lang], ex.step
-    if ex.kind is ExerciseKind.ERRATUM:
-        return W["ex_errata"].format(ref=ref_of(by_id, st.entry.id, handout=True)) + "\n" + printed_display(st.entry.latex)
+    # the level, graded from easy (one star) to hard (three)
+    stars = "\\textsuperscript{" + "$\\star$" * ex.level + "}~" if ex.spec is not None else ""
+    own = _words(ex, "question", by_id, lang)
+    if ex.kind is ExerciseKind.MISPRINT:
+        ask = own or W["ex_errata"].format(ref=ref_of(by_id, st.entry.id, handout=True))
+        return stars + ask + "\n" + printed_display(st.entry.latex)
+    if own:
+        return stars + own + "\n"
     uses = [ref_of(by_id, u, handout=True) for u in st.uses if u in by_id]
     ref = ref_of(by_id, st.entry.id, handout=True)
     key = "ex_derive_none" if not uses else ("ex_derive_one" if len(uses) == 1 else "ex_derive")
@@ -128,11 +186,21 @@ def _solution(ex: Exercise, by_id: dict[str, Step], prose: TextProse, lang: str)
     """A solution in textbook form: how the step goes, in words, and the result in the text's
     form; for an erratum, the correct form, the kind of error and its explanation."""
     W, st = WORDS[lang], ex.step
-    if ex.kind is ExerciseKind.ERRATUM:
+    own = _words(ex, "solution", by_id, lang)
+    if ex.kind is ExerciseKind.COMPUTE:
+        value = (f"${paper_latex(sp.Symbol(ex.spec.unknown))} = {number(ex.answer, lang, ex.spec.digits)}"
+                 + (f"\\,{ex.spec.unit}" if ex.spec.unit else "") + "$")
+        said = own.replace("{answer}", value) if own else ""
+        return ((said + "\n\n") if said else "") + W["sol_answer"].format(
+            answer=value, ref=ref_of(by_id, st.entry.id, handout=True)) + "\n\n"
+    if ex.kind is ExerciseKind.MISPRINT:
         groups = [g for g in cause_groups([st])]
-        note = cause_note(groups[0], prose, lang) if groups else ""
+        note = cause_note(groups[0], prose, lang, citing(by_id.values())) if groups else ""
         return (W["sol_corrected"] + "\n" + printed_display(st.erratum.corrected_latex)
-                + W["sol_kind"].format(kind=kind_name(st.erratum.kind, lang)) + (" " + note if note else "") + "\n\n")
+                + W["sol_kind"].format(kind=kind_name(st.erratum.kind, lang)) + (" " + note if note else "")
+                + (" " + own if own else "") + "\n\n")
+    if own:
+        return own + "\n" + printed_display(shown_latex(st))
     uses = [ref_of(by_id, u, handout=True) for u in st.uses if u in by_id]
     how = step_text(st, by_id, prose, lang, handout=True)
     lead = W["sol_derive"].format(refs=join_refs(uses, lang)) if uses else W["sol_derive_none"]

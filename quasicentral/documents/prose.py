@@ -39,12 +39,12 @@ WORDS = MappingProxyType({
         "from_many": ("Combining {refs} we obtain", "From {refs} together we get"),
         "erratum": r"The text prints this equation with an error ({kind}); the corrected form is shown above.  As printed:",
         "cleared": r"This step looks suspicious, but the check confirms it.",
+        "cleared_doubt": r"A reader may doubt this step --- {doubt} --- but it is right: the check confirms it.",
+        "erratum_exercise": r"This display contains an error, as the text prints it: find it in exercise~{ref}.",
         "unverified": r"This step has not been verified yet.",
         "exercises": "Exercises",
         "solutions": "Solutions",
         "figures": "Figures",
-        "text_figures": "Figures of the text",
-        "studies": "Numerical studies",
         "studies_intro": (r"The charts compare ways of computing the closed forms (the time they take "
                           r"against the digits they get right) and show where the text's approximations "
                           r"hold; they are drawn from the measurements of \emph{quasicentral}."),
@@ -55,6 +55,7 @@ WORDS = MappingProxyType({
         "sol_derive": "From {refs} we obtain",
         "sol_derive_none": "We obtain",
         "sol_corrected": "The correct form is",
+        "sol_answer": r"Answer: {answer} (from {ref}; computed and checked by \emph{{quasicentral}}).",
         "sol_kind": "The error is of the kind: {kind}.",
         "exercise": "Exercise",
         "verified_by": (r"All equations of this handout were checked by \emph{{quasicentral}}; the "
@@ -89,6 +90,20 @@ WORDS = MappingProxyType({
         "how_reached": "of which",
         "errata_table": "The errata, printed and corrected side by side",
         "errata_more": r"Section~\ref{{sec:errata}} explains each cause once.",
+        "found_title": "What was found",
+        "col_cause": "Cause", "col_kind": "Kind", "col_displays": "Equations",
+        "witness_in": "in {ref}: {values}",
+        "found_more": (r"Section~\ref{{sec:errata}} explains each cause; appendix~\ref{{sec:sidebyside}} sets "
+                       r"every erratum's printed and corrected form side by side.  Numbers in parentheses, "
+                       r"such as (28), are the text's own; numbers in brackets, such as [61], name the "
+                       r"displays the text leaves unnumbered, counted through the text."),
+        "source_generic": (r"``Printed'' means the text as its catalog transcribes it (the LaTeX of each "
+                           r"display and its reading in sympy); a slip of the transcription would show here as "
+                           r"an erratum."),
+        "software_note": "Software note: speed and accuracy of the computations",
+        "software_note_intro": (r"This appendix is about the toolkit, not about the text: it measures how fast "
+                                r"and how accurately the closed forms above can be computed, and where the "
+                                r"text's approximations hold.  Nothing in it changes a verdict."),
         "printed": "As printed",
         "derived": "Re-derived",
         "same_as_printed": "the same relation as printed (sympy proves their difference zero).",
@@ -103,6 +118,8 @@ WORDS = MappingProxyType({
         "cause_kind": "Kind",
         "cause_of": "Cause",
         "cleared_title": "Cleared suspects",
+        "cleared_yet_erratum": (r"the suspicion is unfounded; {ref} is nevertheless an erratum, for the cause "
+                                r"given with it."),
         "suspicion": "Suspicion",
         "witness": "Witness",
         "versions": "Software used",
@@ -149,15 +166,6 @@ WORDS = MappingProxyType({
         "dims_add": r"the term {term} has the dimension {a}, the rest of the sum {b}",
         "dims_exp": r"the exponent {arg} has the dimension {a} instead of none",
         "dims_limit": r"the limit {lim} of the integral has the dimension {a}, the variable of integration {b}",
-        "details": [
-            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits \(both sides vanish at every point\)$",
-             "sympy proves the difference zero; both sides vanish at all {0} points"),
-            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits$",
-             "sympy proves the difference zero; agrees at {0} points to {1} or more digits"),
-            (r"^agrees at (\d+) points to (\d+)\+ digits$", "agrees at {0} points to {1} or more digits"),
-            (r"^(\d+) of (\d+) points disagree \(largest relative difference ([0-9.e+-]+)\)$",
-             "{0} of {1} points disagree (largest relative difference {2})"),
-        ],
     },
     "cs": {
         "and": "a",
@@ -170,12 +178,12 @@ WORDS = MappingProxyType({
         "from_many": ("Z~rovnic {refs} dostaneme", "Spojením rovnic {refs} dostaneme"),
         "erratum": r"V~tisku je v~této rovnici chyba ({kind}); výše uvádíme opravený tvar.  Vytištěno bylo:",
         "cleared": r"Tento krok vypadá podezřele, ověření však potvrdilo, že je správný.",
+        "cleared_doubt": r"Tento krok může vzbudit pochybnost --- {doubt} --- je však správný, jak potvrdilo ověření.",
+        "erratum_exercise": r"Tato rovnice je v~textu vytištěna s~chybou: najděte ji ve cvičení~{ref}.",
         "unverified": r"Tento krok zatím nebyl ověřen.",
         "exercises": "Cvičení",
         "solutions": "Řešení",
         "figures": "Obrázky",
-        "text_figures": "Obrázky textu",
-        "studies": "Numerické studie",
         "studies_intro": (r"Grafy porovnávají způsoby výpočtu uzavřených tvarů (potřebný čas proti počtu "
                           r"správných číslic) a~ukazují, kde platí přiblížení textu; jsou sestrojeny "
                           r"z~měření programu \emph{quasicentral}."),
@@ -186,6 +194,7 @@ WORDS = MappingProxyType({
         "sol_derive": "Z~{refs} dostaneme",
         "sol_derive_none": "Dostaneme",
         "sol_corrected": "Správný tvar je",
+        "sol_answer": r"Výsledek: {answer} (z~{ref}; spočteno a~ověřeno programem \emph{{quasicentral}}).",
         "sol_kind": "Druh chyby: {kind}.",
         "exercise": "Cvičení",
         "verified_by": (r"Všechny vztahy tohoto textu ověřil program \emph{{quasicentral}}; zpráva "
@@ -215,22 +224,37 @@ WORDS = MappingProxyType({
         "count_cleared": "vyvrácených podezření",
         "count_inconclusive": "nerozhodnutých nebo neočekávaných",
         "how_reached": "z~toho",
-        "errata_table": "Tiskové chyby: vytištěný a~opravený tvar vedle sebe",
+        "errata_table": "Chyby: vytištěný a~opravený tvar vedle sebe",
         "errata_more": r"Oddíl~\ref{{sec:errata}} vysvětluje každou příčinu jednou.",
+        "found_title": "Co jsme našli",
+        "col_cause": "Příčina", "col_kind": "Druh", "col_displays": "Rovnice",
+        "witness_in": "v~{ref}: {values}",
+        "found_more": (r"Oddíl~\ref{{sec:errata}} vysvětluje každou příčinu; příloha~\ref{{sec:sidebyside}} "
+                       r"staví vedle sebe vytištěný a~opravený tvar každé chyby.  Čísla v~kulatých závorkách, "
+                       r"např. (28), jsou čísla textu; čísla v~hranatých závorkách, např. [61], označují "
+                       r"nečíslované rovnice textu, počítané od začátku textu."),
+        "source_generic": (r"„Vytištěno“ znamená text tak, jak jej přepisuje jeho katalog (LaTeX každé "
+                           r"rovnice a~její čtení v~programu sympy); chyba přepisu by se zde ukázala jako "
+                           r"tisková chyba."),
+        "software_note": "Poznámka o~programu: rychlost a~přesnost výpočtů",
+        "software_note_intro": (r"Tato příloha se týká programu, ne textu: měří, jak rychle a~jak přesně lze "
+                                r"spočítat uzavřené tvary uvedené výše a~kde platí přiblížení textu.  Na žádném "
+                                r"verdiktu nic nemění."),
         "printed": "Vytištěno",
         "derived": "Znovu odvozeno",
         "same_as_printed": "týž vztah jako v~tisku (sympy dokázal, že jejich rozdíl je nulový).",
         "as_it_stands": "není co dosadit: vytištěný vztah se ověřuje tak, jak stojí.",
         "verdict": "Verdikt",
         "step": "Krok",
-        "uses": "z",
+        "uses": "podle",
         "nothing": "výchozí vztah textu",
         "corrected": "Opraveno",
-        "errata": "Tiskové chyby a~jejich příčiny",
+        "errata": "Chyby a~jejich příčiny",
         "cause_affects": "Týká se rovnic",
         "cause_kind": "Druh",
         "cause_of": "Příčina",
         "cleared_title": "Vyvrácená podezření",
+        "cleared_yet_erratum": (r"podezření se nepotvrdilo; rovnice {ref} je přesto chybná, z~příčiny uvedené u~ní."),
         "suspicion": "Podezření",
         "witness": "Protipříklad",
         "versions": "Použitý software",
@@ -276,15 +300,6 @@ WORDS = MappingProxyType({
         "dims_add": r"člen {term} má rozměr {a}, zbytek součtu {b}",
         "dims_exp": r"exponent {arg} má rozměr {a}, a~ne žádný",
         "dims_limit": r"mez {lim} integrálu má rozměr {a}, integrační proměnná {b}",
-        "details": [
-            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits \(both sides vanish at every point\)$",
-             "sympy dokázal, že rozdíl je nulový; obě strany vymizí ve všech {0} bodech"),
-            (r"^sympy proves the difference zero; agrees at (\d+) points to (\d+)\+ digits$",
-             "sympy dokázal, že rozdíl je nulový; shoda v~{0} bodech na {1} a~více číslic"),
-            (r"^agrees at (\d+) points to (\d+)\+ digits$", "shoda v~{0} bodech na {1} a~více číslic"),
-            (r"^(\d+) of (\d+) points disagree \(largest relative difference ([0-9.e+-]+)\)$",
-             "neshoda v~{0} z~{1} bodů (největší relativní rozdíl {2})"),
-        ],
     },
 })
 
@@ -338,6 +353,10 @@ class TextProse:
     #: the text's notation for the printer: symbol name -> LaTeX, function class name -> LaTeX
     symbols: dict[str, str] = field(default_factory=dict)
     functions: dict[str, str] = field(default_factory=dict)
+    #: page 1's story in words (what was found, the substantive findings first) and what
+    #: "printed" means for this text (its source: a transcription, an OCR …), per language
+    abstract: dict[str, str] = field(default_factory=dict)
+    source: dict[str, str] = field(default_factory=dict)
 
     def section_title(self, section: str, lang: str) -> str | None:
         got = self.sections.get(section)
@@ -419,7 +438,8 @@ def load_prose(root: Path, text_id: str | None = None, title: str | None = None)
         _lang_table(data.get("intro"), f"{where}: intro") or base.intro,
         _lang_table(data.get("figures_intro"), f"{where}: figures_intro") or base.figures_intro,
         sections, figures, entries, str(data.get("meta", {}).get("author", "")),
-        dict(data.get("notation", {}).get("symbols", {})), dict(data.get("notation", {}).get("functions", {})))
+        dict(data.get("notation", {}).get("symbols", {})), dict(data.get("notation", {}).get("functions", {})),
+        _lang_table(data.get("abstract"), f"{where}: abstract"), _lang_table(data.get("source"), f"{where}: source"))
 
 
 REPORT_FILE = "report.toml"

@@ -110,6 +110,19 @@ def _math(s: str) -> str:
     return "".join(out).strip()
 
 
+def _closing(s: str, i: int) -> int:
+    """The index of the parenthesis that closes the one at s[i] (−1 where s[i] is none, or it
+    is never closed)."""
+    if i >= len(s) or s[i] != "(":
+        return -1
+    depth = 0
+    for j in range(i, len(s)):
+        depth += {"(": 1, ")": -1}.get(s[j], 0)
+        if depth == 0:
+            return j
+    return -1
+
+
 def _single_base(s: str, i: int) -> bool:
     """Is the character before s[i] a one-letter variable (x, ρ, C, a digit after one)?
     Then '_' or '^' at s[i] is a sub/superscript; after a longer word it is literal."""
@@ -119,7 +132,7 @@ def _single_base(s: str, i: int) -> bool:
     if j == 0:
         return False
     prev = s[j - 1]
-    if prev in MATH_CHARS:
+    if prev in MATH_CHARS or _script(prev) is not None:  # ρ^…, and the upper limit of ∫₀^ζ
         return True
     if not (prev.isascii() and prev.isalnum()):
         return prev in ")]}"
@@ -129,15 +142,25 @@ def _single_base(s: str, i: int) -> bool:
     return j - k == 1
 
 
-def text(s: str, letters: bool = True) -> str:
-    """Prose with Unicode mathematics as LaTeX for pdfLaTeX (T1 fonts, UTF-8 input).
+#: the one-letter words of each language: in Czech the prepositions and conjunctions k, s, v, z,
+#: o, u, a, i, which Czech typography ties to the next word (``v~tisku``); any other lone letter
+#: of prose is a variable
+ONE_LETTER_WORDS = MappingProxyType({"en": frozenset("aI"), "cs": frozenset("ksvzouaiKSVZOUAI")})
+
+
+def text(s: str, letters: bool = True, lang: str = "en") -> str:
+    r"""Prose with Unicode mathematics as LaTeX for pdfLaTeX (T1 fonts, UTF-8 input).
 
     Greek letters, operators, super- and subscript characters and combining dots become math
     (``\\ensuremath``); ``a_b`` and ``a^{b}`` after a one-letter variable become sub- and
     superscripts (after a word such as ``test_x`` the underscore is literal); every character
     special to TeX is escaped.  Letters with diacritics that T1 has (Czech) pass through.
-    With ``letters`` (English prose), a lone letter such as the R of "R = 2κmv" is a variable
-    and set in math italics too (not "a", "I", nor the d of "d/dt").
+    With ``letters``, a lone letter such as the R of "R = 2κmv" is a variable and set in math
+    italics too — not a one-letter word of ``lang`` (:data:`ONE_LETTER_WORDS`) before a word, nor
+    the d of "d/dt"; in Czech such a word is tied to the next one.
+
+    >>> print(text("v tisku je x − κy a k je modul", lang="cs"))
+    v~tisku je \ensuremath{x} \ensuremath{-} \ensuremath{\kappa y} a~k~je modul
     """
     tokens: list[tuple[bool, str]] = []  # (is_math, latex)
 
@@ -187,13 +210,18 @@ def text(s: str, letters: bool = True) -> str:
                 inner = s[i + 1:j]
             push(True, ch + "{" + _math(inner) + "}")
             i = j
+        elif ch == "^" and 0 < i and _closing(s, i + 1) > 0:
+            # a power of a parenthesis, (1 − X)^(−1/2): its exponent raised, without the brackets
+            j = _closing(s, i + 1)
+            push(True, "^{" + _math(s[i + 2:j]) + "}")
+            i = j + 1
         elif ch == "\n":
             push(False, " ")
             i += 1
         else:
             push(False, _other(ch, math=False))
             i += 1
-    return _join(tokens, letters)
+    return _join(tokens, letters, ONE_LETTER_WORDS.get(lang, ONE_LETTER_WORDS["en"]), lang == "cs")
 
 
 def escape(s: str) -> str:
@@ -226,7 +254,7 @@ def safe_math(tex: str) -> bool:
     return all(word in SAFE_MATH for word in re.findall(r"\\([A-Za-z@]+)", tex))
 
 
-def with_math(s: str, letters: bool = True) -> str:
+def with_math(s: str, letters: bool = True, lang: str = "en") -> str:
     r"""Prose that may hold inline mathematics between ``$`` signs (catalog notes and titles):
     the mathematics is kept as written, the rest goes through :func:`text`.  An odd number of
     ``$`` means they are not delimiters, and mathematics with a control word outside
@@ -240,22 +268,23 @@ def with_math(s: str, letters: bool = True) -> str:
     """
     parts = s.split("$")
     if len(parts) % 2 == 0 or any(not p.strip() for p in parts[1::2]) or not all(safe_math(p) for p in parts[1::2]):
-        return text(s, letters)
-    return "".join(text(p, letters) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
+        return text(s, letters, lang)
+    return "".join(text(p, letters, lang) if i % 2 == 0 else f"${p}$" for i, p in enumerate(parts))
 
 
 _NEIGHBOURS = frozenset(set(" =+-,;:()[]/*<>0123456789"))
 
 
-def _lone_variable(tokens: list[tuple[bool, str]], k: int) -> bool:
-    """Is text token k a letter standing alone between spaces, operators or brackets?"""
+def _lone_variable(tokens: list[tuple[bool, str]], k: int, words: frozenset = frozenset("aI")) -> bool:
+    """Is text token k a letter standing alone between spaces, operators or brackets (and not a
+    one-letter word of the language before a word)?"""
     tex = tokens[k][1]
-    if tex in ("a", "I", "d"):
-        return False
     prev = tokens[k - 1] if k > 0 else (False, " ")
     nxt = tokens[k + 1] if k + 1 < len(tokens) else (False, " ")
     after = tokens[k + 2] if k + 2 < len(tokens) else (False, " ")
     then = tokens[k + 3] if k + 3 < len(tokens) else (False, "")
+    if tex == "d" or (tex in words and (tex in "aI" or (nxt[1] == " " and not after[0] and after[1][:1].isalpha()))):
+        return False
     prev_ok = prev[0] or prev[1] in _NEIGHBOURS
     # before a full stop only at the end of a sentence ("law of S."), not in "t. j." or "e.g."
     end_of_sentence = nxt[1] in ".?!" and (k + 2 >= len(tokens) or (
@@ -264,8 +293,10 @@ def _lone_variable(tokens: list[tuple[bool, str]], k: int) -> bool:
     return prev_ok and next_ok
 
 
-def _join(tokens: list[tuple[bool, str]], letters: bool = True) -> str:
-    """Merge runs of math tokens (and single letters glued to them) into one \\ensuremath."""
+def _join(tokens: list[tuple[bool, str]], letters: bool = True, words: frozenset = frozenset("aI"),
+          tie: bool = False) -> str:
+    """Merge runs of math tokens (and single letters glued to them) into one \\ensuremath;
+    with ``tie``, a one-letter word of ``words`` is tied to the next word by ``~``."""
     # a lone ASCII letter touching math (ρψ̇, a_ρ, e^{...}) reads as a variable: make it math
     merged: list[tuple[bool, str]] = []
     for k, (is_math, tex) in enumerate(tokens):
@@ -276,7 +307,7 @@ def _join(tokens: list[tuple[bool, str]], letters: bool = True) -> str:
             next_letter = k + 1 < len(tokens) and not tokens[k + 1][0] and tokens[k + 1][1][:1].isalpha()
             if (prev_math or next_math) and not prev_letter and not next_letter:
                 is_math = True
-            elif letters and _lone_variable(tokens, k):
+            elif letters and _lone_variable(tokens, k, words):
                 is_math = True
         if merged and merged[-1][0] == is_math:
             a = merged[-1][1]
@@ -289,7 +320,17 @@ def _join(tokens: list[tuple[bool, str]], letters: bool = True) -> str:
         if is_math:
             out.append(r"\ensuremath{" + tex.strip() + "}" + (" " if tex.endswith(" ") else ""))
         else:
-            out.append(tex)
+            out.append(_tied(tex, words) if tie else tex)
+    return "".join(out)
+
+
+def _tied(prose: str, words: frozenset) -> str:
+    """``prose`` with each one-letter word of ``words`` tied to what follows (Czech typography:
+    no preposition at the end of a line)."""
+    out = list(prose)
+    for i in range(len(out) - 1):
+        if out[i] in words and out[i + 1] == " " and (i == 0 or not (out[i - 1].isalnum() or out[i - 1] == "\\")):
+            out[i + 1] = "~"
     return "".join(out)
 
 
@@ -301,6 +342,10 @@ _GREEK_WORDS = MappingProxyType({"alpha": "α", "beta": "β", "gamma": "γ", "de
 CODE_NAMES = MappingProxyType({"elliptic_k": "K", "elliptic_f": "F", "elliptic_e": "E", "Fj": "F", "Ej": "E", "Kc": "K",
               "Ec": "E", "asin": "arcsin", "atan2": "arctg", "atan": "arctg", "sqrt": "√"})
 _SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+#: the checker's name for the n-th time derivative of a function at a point (phi_t1 for φ̇), and
+#: the dots it is written with
+_JET_NAME = re.compile(r"\b([A-Za-z]+)_t([0-4])\b")
+_JET_DOTS = ("", "\u0307", "\u0308", "\u20db", "\u20dc")
 _TEST_REFERENCE = re.compile(
     r"\s*\((?:[^()]|\([^()]*\))*?(?:\btests?\b/|\btest_\w+|\w+\.py\b|\btests\)|\(tests\b)(?:[^()]|\([^()]*\))*\)"
     r"|\s*\(tests?\)")
@@ -334,6 +379,8 @@ def clean_prose(s: str) -> str:
     s = re.sub(r"\btest_\w+", "a test", s)
     s = re.sub(r"\b(" + "|".join(sorted(CODE_NAMES, key=len, reverse=True)) + r")(?=\()",
                lambda m: CODE_NAMES[m.group(1)], s)
+    # a point's coordinate of a motion, phi_t1 (the checker's jet: φ̇ at the point), as the paper writes it
+    s = _JET_NAME.sub(lambda m: _GREEK_WORDS.get(m.group(1), m.group(1)) + _JET_DOTS[int(m.group(2))], s)
     # a Greek letter's name as its letter — not in the name of a function or a constant ("the gamma function", "the omega constant")
     s = re.sub(r"\b(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(\d?)\b(?!\s+(?:functions?|constants?)\b)",
                lambda m: _GREEK_WORDS[m.group(1)] + m.group(2).translate(_SUBSCRIPT_DIGITS), s)

@@ -3,13 +3,17 @@
 Views over the same records (STYLE.md, point 9):
 
 * the **report** of a text (:mod:`~quasicentral.documents.derivation_report`) opens with what
-  its reader came for: what was checked and how, the counts, and the errata with their printed
-  and corrected forms side by side (page 1); then each cause of error explained once with the
-  displays it affects, the cleared suspects, every equation of the text compactly (as printed,
-  as re-derived in the text's notation, one short verdict, the step), the figures, and the
-  method with the evidence for each equation once, in an appendix;
+  its reader came for: the story in words (report.toml's abstract), what "printed" means for
+  the text, what was checked and how, the counts, and one row per cause of its errata (page 1);
+  then each cause explained once with the displays it affects, the cleared suspects, every
+  equation of the text compactly (as printed, as re-derived in the text's notation, one short
+  verdict, the step), the figures in the document's language; in appendices the method with
+  the evidence for each equation, every erratum printed and corrected side by side, and the
+  software note (the measured charts: about the toolkit, not the text);
 * the **handout** (:mod:`~quasicentral.documents.handout`) tells the derivation to a student
-  in the text's order, with exercises; the **teacher's** handout adds the solutions.
+  in the text's order, with the exercises of the text's bank (graded, each checked by
+  :mod:`quasicentral.engine.exercises`) and no answer; the **teacher's** handout adds the
+  worked solutions and the computed answers.
 
 A text's own words (title, introductions, section titles, figure captions, Czech step texts)
 come from ``<text folder>/report.toml`` (:mod:`quasicentral.documents.prose`); generic words
@@ -75,7 +79,7 @@ def generate(records: list[TextRecords], kinds=("report",), langs=("en",)) -> di
 
 def figures_needed(docs: dict[str, str], texts) -> list[FigureItem]:
     """The figures the documents include, in the order of the texts' figures."""
-    return [f for f in figure_items(list(texts)) if any(f"{{{f.path}}}" in tex for tex in docs.values())]
+    return [f for f in figure_items(list(texts), LANGS) if any(f"{{{f.path}}}" in tex for tex in docs.values())]
 
 
 def check_writable(out: Path) -> None:
@@ -106,6 +110,6 @@ def write(out: Path, docs: dict[str, str], texts=(), progress=None) -> list[Path
         files.ensure_dir(files.inside(out, FIGURE_DIR))
     notify(progress, 0, len(figs), "", 0, "figures")
     for i, f in enumerate(figs):
-        put(files.inside(out, f.path), lambda tmp, f=f: figures_mod.draw(f.make(), tmp))
+        put(files.inside(out, f.path), lambda tmp, f=f: figures_mod.draw(f.make(), tmp, f.lang, titled=False))
         notify(progress, i + 1, len(figs), f.path, 0, "figures")
     return sorted(written)

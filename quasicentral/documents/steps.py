@@ -10,7 +10,7 @@ everything else here turns those records into the words of one entry.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import sympy as sp
@@ -77,6 +77,7 @@ class TextRecords:
 
     text: object  # quasicentral.engine.texts.Text
     steps: tuple[Step, ...]
+    exercises: tuple = ()  # quasicentral.engine.exercises.Exercise: the text's bank, checked
 
     @property
     def id(self) -> str:
@@ -126,7 +127,23 @@ def records_for(ws, texts: list, opts, progress=None, on_warning=None) -> list[T
     outcomes = dict(zip([e.id for e in entries], run.run(ws, entries, opts, use_cache=True, progress=progress,
                                                           on_warning=on_warning)))
     run.derive_all(ws, [e.id for e in entries], opts)  # the folders' code runs in workers, not here
-    return [TextRecords(t, tuple(steps_of(ws, t, outcomes))) for t in texts]
+    out = []
+    for t in texts:
+        steps = tuple(steps_of(ws, t, outcomes))
+        out.append(TextRecords(t, steps, exercises_for(t, steps)))
+    return out
+
+
+def exercises_for(text, steps) -> tuple:
+    """The text's exercise bank (its report.toml), each exercise checked against its steps."""
+    from quasicentral.engine.exercises import read_bank, settle
+
+    bank = read_bank(text.root, text.id)
+    if not bank:
+        return ()
+    return settle(bank, dict(text.entries), {s.entry.id: s.outcome.status for s in steps},
+                  {s.entry.id: s.uses for s in steps},
+                  {s.entry.id: s.erratum.corrected_text for s in steps if s.is_erratum})
 
 
 def sections_of(steps) -> list[tuple[str, list[Step]]]:
@@ -189,7 +206,7 @@ def step_text(st: Step, by_id: dict[str, Step], prose: TextProse, lang: str, han
     refs = join_refs([ref_of(by_id, u, handout) for u in uses], lang)
     where = (W["step_from"][d.mode].format(refs=refs) if uses else W["step_none"][d.mode])
     if lang == "en":
-        return paragraphs(clean_prose(d.doc))
+        return paragraphs(cite(clean_prose(d.doc), citing(by_id.values())))
     head = _MATH_HEAD.match(" ".join(d.doc.split())).group(1).strip()
     formula = clean_prose(head)
     if _is_formula(formula):
@@ -197,16 +214,49 @@ def step_text(st: Step, by_id: dict[str, Step], prose: TextProse, lang: str, han
     return where
 
 
-def erratum_note(st: Step, prose: TextProse, lang: str) -> str:
+#: significant digits of a witness's values in a document's prose (the appendix's table and the
+#: JSON keep every digit)
+WITNESS_DIGITS = 4
+
+
+def citing(steps) -> dict[str, str]:
+    """How a note may name another display of its text — by the local part of its id
+    (``D-integral`` for mytext:D-integral) — and how a reader is told it: its tag, [82]."""
+    out = {}
+    for st in steps:
+        local = st.entry.id.split(":", 1)[-1]
+        if "-" in local and any(c.isalpha() for c in local):
+            out[local] = st.tag
+    return out
+
+
+def cite(tex: str, tags: dict[str, str]) -> str:
+    """``tex`` (a note's plain words) with every display it names by id given by its tag
+    instead: an internal id is no word for a reader."""
+    if not tags or not tex:
+        return tex
+    names = "|".join(re.escape(k) for k in sorted(tags, key=len, reverse=True))
+    return re.sub(rf"(?<![\w.:/\\-])({names})(?![\w-])", lambda m: tags[m.group(1)], tex)
+
+
+def cleared_note(st: Step, lang: str, tags: dict[str, str] | None = None) -> str:
+    """What a reader is told about a cleared suspicion: its record's note in the language."""
+    note = st.cleared.note_in(lang) if st.cleared is not None else ""
+    witness = getattr(st.outcome.verdict, "witness", None)
+    return with_math(cite(clean_prose(render_note(note, witness, lang, WITNESS_DIGITS)), tags), lang=lang) if note else ""
+
+
+def erratum_note(st: Step, prose: TextProse, lang: str, tags: dict[str, str] | None = None) -> str:
     """What a reader is told about an erratum or a cleared suspect, in the language: the text's
     own words (report.toml), the record's note in English, or nothing."""
     witness = getattr(st.outcome.verdict, "witness", None)
     own = prose.entry(st.entry.id).erratum.get(lang)
     if own:
-        return render_note(own, witness, lang)  # numbers only through {witness…} placeholders
+        return render_note(own, witness, lang, WITNESS_DIGITS)  # numbers only through {witness…} placeholders
     record = st.erratum if st.erratum is not None else st.cleared
     note = record.note_in(lang) if record is not None else ""
-    return with_math(clean_prose(render_note(note, witness, lang)), letters=lang == "en") if note else ""
+    return with_math(cite(clean_prose(render_note(note, witness, lang, WITNESS_DIGITS)), tags), letters=True,
+                     lang=lang) if note else ""
 
 
 # --- causes of errata ------------------------------------------------------------------------------
@@ -258,37 +308,53 @@ def cause_title(g: CauseGroup, prose: TextProse, lang: str) -> str:
     if g.recorded:
         got = g.title.get(lang) or (g.title.get("en") if lang == "en" else "")
         if got:  # in Czech a lone letter is a preposition (k, v, s, u), not a variable
-            return with_math(clean_prose(got), letters=lang == "en")
+            return with_math(clean_prose(got), letters=True, lang=lang)
         return kind_name(g.kind, lang)[:1].upper() + kind_name(g.kind, lang)[1:]
     st = g.steps[0]
     return entry_heading(st, prose, lang) + ": " + kind_name(g.kind, lang)
 
 
-def cause_note(g: CauseGroup, prose: TextProse, lang: str) -> str:
+def cause_note(g: CauseGroup, prose: TextProse, lang: str, tags: dict[str, str] | None = None) -> str:
     if g.recorded:
         got = g.note.get(lang, "")
-        return with_math(clean_prose(got), letters=lang == "en") if got else ""
-    return erratum_note(g.steps[0], prose, lang)
+        return with_math(cite(clean_prose(got), tags), letters=True, lang=lang) if got else ""
+    return erratum_note(g.steps[0], prose, lang, tags)
 
 
 # --- figures ---------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class FigureItem:
+    """A figure as a document includes it: in its language where it is drawn per language (a
+    text's own figure: its axes, legend and decimal separator), else as it is (a measured chart)."""
+
     name: str
     title: str
     make: object  # builds the figure (from its text's figures.py)
+    localized: bool = True
+    lang: str = "en"
 
     @property
     def path(self) -> str:
-        return f"{FIGURE_DIR}/{self.name}.png"
+        own = self.localized and self.lang != "en"
+        return f"{FIGURE_DIR}/{self.name}{'-' + self.lang if own else ''}.png"
+
+    def in_lang(self, lang: str) -> "FigureItem":
+        return replace(self, lang=lang)
 
 
-def figure_items(texts: list) -> tuple[FigureItem, ...]:
-    """Every figure of ``texts`` (their folders' figures.py)."""
+def _item(fig) -> FigureItem:
+    return FigureItem(fig.name, fig.title, lambda fig=fig: fig, not isinstance(fig, figures_mod.MeasuredChart))
+
+
+def figure_items(texts: list, langs=("en",)) -> tuple[FigureItem, ...]:
+    """Every figure of ``texts`` (their folders' figures.py), in each of ``langs`` where it is
+    drawn per language."""
     items: dict[str, FigureItem] = {}
     for t in texts:
         for fig in figures_mod.of_text(t):
-            items.setdefault(fig.name, FigureItem(fig.name, fig.title, lambda fig=fig: fig))
+            for lang in langs:
+                item = _item(fig).in_lang(lang)
+                items.setdefault(item.path, item)
     return tuple(items.values())
 
 
@@ -302,7 +368,7 @@ def figures_for(text, prose: TextProse, role: str | None = None) -> list[tuple[F
         fp = said.get(fig.name)
         kind = fp.role if fp is not None else ("study" if isinstance(fig, figures_mod.MeasuredChart) else "text")
         if role is None or kind == role:
-            out.append((FigureItem(fig.name, fig.title, lambda fig=fig: fig), fp))
+            out.append((_item(fig), fp))
     return out
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from types import MappingProxyType
 
+import mpmath
 import sympy as sp
 
 from quasicentral.engine.wording import Plain
@@ -20,17 +21,31 @@ _PLACEHOLDER = re.compile(r"\{witness(?:\.(printed|corrected|relative_difference
 PARAMETER_DIGITS = 8  # significant digits of a witness's parameter in prose
 
 
-def parameters_text(w, lang: str = "en") -> dict[str, str]:
+def parameters_text(w, lang: str = "en", digits: int = PARAMETER_DIGITS) -> dict[str, str]:
     """The witness's exact parameters as short decimals for prose (integers as they are)."""
     style = Plain(lang)
     out = {}
     for k, v in w.parameters.items():
         val = sp.sympify(v, rational=True) if not isinstance(v, sp.Basic) else v
-        short = sp.sstr(sp.N(val, PARAMETER_DIGITS))
+        short = sp.sstr(sp.N(val, digits))
         if "." in short and "e" not in short:  # 1.5000000 → 1.5: the zeros say nothing
             short = short.rstrip("0").rstrip(".")
         out[k] = v if val.is_Rational and val.q == 1 else style.decimal(short)
     return out
+
+
+def short_value(value: str, digits: int | None) -> str:
+    """A witness value (a decimal string of up to 20 digits) in ``digits`` significant digits
+    with a real minus sign, for a reader; as it is where ``digits`` is None or it is no number."""
+    if digits is None:
+        return value
+    try:
+        with mpmath.workdps(max(digits, 20) + 5):
+            x = mpmath.mpmathify(value)
+            shown = mpmath.nstr(x, digits, strip_zeros=True) if x != 0 else "0"
+    except (ValueError, TypeError):
+        return value
+    return shown.replace("-", "−")
 
 
 _SENTENCE = MappingProxyType({
@@ -45,38 +60,48 @@ _SENTENCE = MappingProxyType({
 })
 
 
-def witness_sentence(w, lang: str = "en") -> str:
-    """The witness as one sentence, from its record only."""
+def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
+    """The witness as one sentence, from its record only: its values in full (the JSON, the
+    terminal), or in ``digits`` significant digits with real minus signs (a document's prose,
+    its point then in as many)."""
     words = _SENTENCE.get(lang, _SENTENCE["en"])
     if w is None:
         return words[3]
     from quasicentral.engine.wording import render
 
     style = Plain(lang)
-    at = ", ".join(f"{k} = {v}" for k, v in parameters_text(w, lang).items())
+    params = parameters_text(w, lang, digits or PARAMETER_DIGITS)
+    at = ", ".join(f"{k} = {v.replace('-', '−') if digits else v}" for k, v in params.items())
+    p, c = short_value(w.printed, digits), short_value(w.corrected, digits)
+    more = digits
+    while more is not None and p == c and more < 20:  # as many digits as tell the two apart
+        more += 1
+        p, c = short_value(w.printed, more), short_value(w.corrected, more)
     # a value with no point (a printed rounding, a special value) is said without one
-    r = words[5] + style.decimal(w.relative_difference) if w.relative_difference else ""
-    return words[0 if at else 4].format(at=at, q=render(w.quantity, lang), p=style.decimal(w.printed),
-                                        c=style.decimal(w.corrected), r=r, cert=words[1] if w.certified else words[2])
+    r = words[5] + style.decimal(short_value(w.relative_difference, digits and 2)) if w.relative_difference else ""
+    return words[0 if at else 4].format(at=at, q=render(w.quantity, lang), p=style.decimal(p),
+                                        c=style.decimal(c), r=r, cert=words[1] if w.certified else words[2])
 
 
-def render_note(note: str, w, lang: str = "en") -> str:
+def render_note(note: str, w, lang: str = "en", digits: int | None = None) -> str:
     """``note`` with its ``{witness…}`` placeholders filled from the witness ``w`` ('—' where
-    the witness has no such value)."""
+    the witness has no such value); its numbers in ``digits`` significant digits where given
+    (:func:`witness_sentence`)."""
     style = Plain(lang)
 
     def fill(m: re.Match) -> str:
         field = m.group(1)
         if field is None:
-            return witness_sentence(w, lang)
+            return witness_sentence(w, lang, digits)
         if w is None:
             return "—"
         if field.startswith("parameters."):
-            return parameters_text(w, lang).get(field.split(".", 1)[1], "—")
+            got = parameters_text(w, lang, digits or PARAMETER_DIGITS).get(field.split(".", 1)[1], "—")
+            return got.replace("-", "−") if digits else got
         if field == "quantity":
             from quasicentral.engine.wording import render
 
             return render(w.quantity, lang)
-        return style.decimal(str(getattr(w, field)))
+        return style.decimal(short_value(str(getattr(w, field)), digits))
 
     return _PLACEHOLDER.sub(fill, note)

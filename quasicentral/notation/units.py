@@ -113,5 +113,20 @@ def _units(text: str) -> sp.Expr:
 
 
 def dim_text(d: sp.Expr) -> str:
-    """The inverse of :func:`parse_dim`, for messages: L²/T → ``'L^2/T'``."""
-    return sp.sstr(d).replace("**", "^").replace("[", "").replace("]", "")
+    """The inverse of :func:`parse_dim`, for messages: L²/T → ``'L^2/T'``, T^(3/2)/L^(1/2)
+    (every power written as one, never a root: the text is read back by :func:`parse_dim`)."""
+    d = sp.sympify(d)
+    if d == 1:
+        return "1"
+
+    def power(base, exp) -> str:
+        name = str(base).strip("[]")
+        return name if exp == 1 else (f"{name}^{exp}" if exp.is_Integer else f"{name}^({exp})")
+
+    factors = sorted(d.as_powers_dict().items(), key=lambda kv: str(kv[0]))
+    num = [power(b, e) for b, e in factors if e > 0]
+    den = [power(b, -e) for b, e in factors if e < 0]
+    out = "*".join(num) or "1"
+    if den:
+        out += "/" + (den[0] if len(den) == 1 else "(" + "*".join(den) + ")")
+    return out

@@ -12,9 +12,10 @@ from __future__ import annotations
 import csv
 import io
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import Enum
 from pathlib import Path
+from types import MappingProxyType
 
 import numpy as np
 
@@ -38,6 +39,13 @@ class Figure:
     xlabel: str = ""
     ylabel: str = ""
     ylim: tuple[float, float] | None = None
+    #: the words in other languages: {"cs": {"xlabel": …, "ylabel": …, "labels": (…)}} (English
+    #: above); labels may hold matplotlib's mathtext ($T/T_0$), set in Computer Modern
+    words: MappingProxyType = field(default_factory=lambda: MappingProxyType({}))
+
+    def said(self, key: str, lang: str):
+        """The figure's ``key`` (xlabel, ylabel, labels) in ``lang``, else in English."""
+        return self.words.get(lang, {}).get(key, getattr(self, key))
 
 
 @dataclass(frozen=True)
@@ -102,14 +110,15 @@ def to_csv(fig: Figure) -> str:
     return buf.getvalue()
 
 
-def draw(fig: Figure | MeasuredChart, path: Path) -> None:
-    """Any figure as a PNG: a measured chart from its CSV, else :func:`render` — or the PNG kept
-    in the cache (``figures/``) for the same data, drawing code and matplotlib settings: a
-    report drawn again after an edit of its prose does not redraw its 18 figures (~17 s)."""
+def draw(fig: Figure | MeasuredChart, path: Path, lang: str = "en", titled: bool = True) -> None:
+    """Any figure as a PNG: a measured chart from its CSV, else :func:`render` in ``lang`` (with
+    its title, or without where a caption says it) — or the PNG kept in the cache
+    (``figures/``) for the same data, words, drawing code and matplotlib settings: a report drawn
+    again after an edit of its prose does not redraw its 18 figures (~17 s)."""
     from quasicentral import files
     from quasicentral.engine.fingerprint import cache_dir
 
-    folder, name = cache_dir() / FIGURE_CACHE, f"{_drawing_key(fig)}.png"
+    folder, name = cache_dir() / FIGURE_CACHE, f"{_drawing_key(fig, lang, titled)}.png"
     kept = files.read_private(folder, name)
     if kept is not None and kept.startswith(b"\x89PNG"):
         path.write_bytes(kept)
@@ -117,7 +126,7 @@ def draw(fig: Figure | MeasuredChart, path: Path) -> None:
     if isinstance(fig, MeasuredChart):
         fig.render(path)
     else:
-        render(fig, path)
+        render(fig, path, lang, titled)
     try:
         files.ensure_dir(folder)
         os.chmod(folder, 0o700)  # read back only from a folder nobody else may write
@@ -129,7 +138,7 @@ def draw(fig: Figure | MeasuredChart, path: Path) -> None:
 FIGURE_CACHE = "figures"
 
 
-def _drawing_key(fig: Figure | MeasuredChart) -> str:
+def _drawing_key(fig: Figure | MeasuredChart, lang: str = "en", titled: bool = True) -> str:
     """What a PNG depends on: the figure's data and labels (a measured chart's CSV), the drawing
     code, matplotlib's and numpy's versions and every matplotlib setting in force."""
     import hashlib
@@ -148,7 +157,8 @@ def _drawing_key(fig: Figure | MeasuredChart) -> str:
         h.update((MEASUREMENTS / f"{fig.name}.csv").read_bytes())
     else:
         h.update(repr((fig.name, fig.title, fig.columns, fig.kind.value, fig.labels, fig.xlabel, fig.ylabel,
-                       fig.ylim)).encode())
+                       fig.ylim, sorted((k, sorted(v.items())) for k, v in fig.words.items()), lang,
+                       titled)).encode())
         h.update(to_csv(fig).encode())
     return h.hexdigest()
 
@@ -162,40 +172,64 @@ def _drawing_modules() -> tuple[str, ...]:
             *(importlib.import_module(f"quasicentral.studies.charts.{m}").__file__ for m in charts))
 
 
-def render(fig: Figure, path: Path) -> None:
-    """Plot ``fig`` to a PNG with fixed metadata (byte-identical for the same data)."""
+#: matplotlib's settings for every figure: a serif text font and Computer Modern mathematics,
+#: like the LaTeX documents the figures go into
+STYLE = MappingProxyType({"svg.hashsalt": "quasicentral", "font.size": 9, "font.family": "serif",
+                          "mathtext.fontset": "cm", "axes.spines.top": False, "axes.spines.right": False,
+                          "legend.frameon": False})
+
+
+def _decimal_comma(ax) -> None:
+    """Tick labels with a decimal comma (Czech), the numbers as matplotlib chooses them."""
+    from matplotlib.ticker import ScalarFormatter
+
+    class Comma(ScalarFormatter):
+        def __call__(self, x, pos=None):
+            return super().__call__(x, pos).replace(".", ",")
+
+    ax.xaxis.set_major_formatter(Comma())
+    ax.yaxis.set_major_formatter(Comma())
+
+
+def render(fig: Figure, path: Path, lang: str = "en", titled: bool = True) -> None:
+    """Plot ``fig`` to a PNG with fixed metadata (byte-identical for the same data), its words
+    in ``lang`` (a decimal comma in Czech); the title only where no caption says it."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    with matplotlib.rc_context({"svg.hashsalt": "quasicentral", "font.size": 9}):
+    with matplotlib.rc_context(dict(STYLE)):
         figure, ax = plt.subplots(figsize=(5.0, 4.0), dpi=120)
         d = fig.data
         if fig.kind is Kind.TRAJECTORY:
             ax.plot(d[:, 1] * 1000, d[:, 2] * 1000, lw=1.0)
             ax.plot([d[0, 1] * 1000], [d[0, 2] * 1000], "o", ms=3)
-            ax.set_xlabel("x [mm]")
-            ax.set_ylabel("y [mm]")
+            ax.set_xlabel("$x$ [mm]")
+            ax.set_ylabel("$y$ [mm]")
             ax.set_aspect("equal", adjustable="datalim")
         elif fig.kind is Kind.TIME:
-            ax.plot(d[:, 0], d[:, 1] * 1000, lw=1.0, label="x(t)")
-            ax.plot(d[:, 0], d[:, 2] * 1000, lw=1.0, label="y(t)")
-            ax.set_xlabel("t [s]")
+            ax.plot(d[:, 0], d[:, 1] * 1000, lw=1.0, label="$x(t)$")
+            ax.plot(d[:, 0], d[:, 2] * 1000, lw=1.0, label="$y(t)$")
+            ax.set_xlabel("$t$ [s]")
             ax.set_ylabel("[mm]")
-            ax.legend()
+            ax.legend(loc="best")
         else:
-            ax.plot(d[:, 0], d[:, 1], "k", lw=1.5, label=fig.labels[0] if fig.labels else None)
-            for j, label in enumerate(fig.labels[1:]):
+            labels = fig.said("labels", lang)
+            ax.plot(d[:, 0], d[:, 1], "k", lw=1.5, label=labels[0] if labels else None)
+            for j, label in enumerate(labels[1:]):
                 ax.plot(d[:, 0], d[:, 2 + j], lw=0.8, ls="--", label=label)
             if fig.ylim:
                 ax.set_ylim(*fig.ylim)
-            ax.set_xlabel(fig.xlabel)
-            ax.set_ylabel(fig.ylabel)
-            if fig.labels:
-                ax.legend(fontsize=7)
-        ax.set_title(fig.title, fontsize=8)
+            ax.set_xlabel(fig.said("xlabel", lang))
+            ax.set_ylabel(fig.said("ylabel", lang))
+            if labels:
+                ax.legend(fontsize=7, loc="best")
+        if titled:
+            ax.set_title(fig.title, fontsize=8)
         ax.grid(True, lw=0.3)
+        if lang == "cs":
+            _decimal_comma(ax)
         figure.tight_layout()
         save_png(figure, path)
         plt.close(figure)
