@@ -235,7 +235,7 @@ def test_a_figure_is_drawn_once_per_data(tmp_path, monkeypatch):
     monkeypatch.setenv("QUASICENTRAL_CACHE", str(tmp_path / "cache"))
     drawn = []
     real_render = figures.render
-    monkeypatch.setattr(figures, "render", lambda fig, path: drawn.append(fig.name) or real_render(fig, path))
+    monkeypatch.setattr(figures, "render", lambda fig, path, *how: drawn.append(fig.name) or real_render(fig, path, *how))
     figures.draw(_small_figure(), tmp_path / "a.png")
     figures.draw(_small_figure(), tmp_path / "b.png")
     assert drawn == ["tiny"] and (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
@@ -264,6 +264,6 @@ def test_a_kept_figure_others_could_have_written_is_drawn_anew(tmp_path, monkeyp
         kept.write_bytes(b"GIF89a not a png")
     drawn = []
     real_render = figures.render
-    monkeypatch.setattr(figures, "render", lambda fig, path: drawn.append(1) or real_render(fig, path))
+    monkeypatch.setattr(figures, "render", lambda fig, path, *how: drawn.append(1) or real_render(fig, path, *how))
     figures.draw(_small_figure(), tmp_path / "b.png")
     assert drawn == [1] and (tmp_path / "b.png").read_bytes() == (tmp_path / "a.png").read_bytes()

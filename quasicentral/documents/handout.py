@@ -14,8 +14,8 @@ from quasicentral.documents.derivation_report import figures_section
 from quasicentral.documents.latex import paper_latex
 from quasicentral.documents.prosetex import clean_prose, escape, with_math
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
-from quasicentral.documents.steps import (Step, TextRecords, cause_groups, cause_note, citing, kind_name, section_title,
-                                          sections_of, step_text)
+from quasicentral.documents.steps import (Step, TextRecords, cause_groups, cause_note, cite, citing, kind_name,
+                                          section_title, sections_of, step_text)
 from quasicentral.engine.exercises import REF, ExerciseKind, ExerciseSpec
 from quasicentral.engine.verdict import Status
 
@@ -89,8 +89,10 @@ def handout_tex(rec: TextRecords, lang: str, solutions: bool = False) -> str:
         intro = prose.section_intro(section, lang)
         if intro:
             parts.append(intro + "\n\n")
+        told = ""  # the step said last: a derivation that covers several displays is told once
         for i, st in enumerate(group):
-            parts.append(_handout_step(st, i, by_id, tags[st.entry.id], prose, lang, hidden.get(st.entry.id)))
+            step, told = _handout_step(st, i, by_id, tags[st.entry.id], prose, lang, hidden.get(st.entry.id), told)
+            parts.append(step)
     if exercises:
         parts.append(f"\\section{{{W['exercises']}}}\n\\begin{{enumerate}}\n")
         for n, ex in enumerate(exercises, 1):
@@ -133,17 +135,20 @@ def _connect(st: Step, index: int, by_id: dict[str, Step], lang: str) -> str:
 
 
 def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose: TextProse, lang: str,
-                  exercise: int | None = None) -> str:
-    """One step told to a student; ``exercise``, the number of the exercise that asks for this
-    erratum's correction (then the display is shown as printed, and nothing more is said)."""
+                  exercise: int | None = None, told: str = "") -> tuple[str, str]:
+    """One step told to a student, and the words of its step; ``exercise``, the number of the
+    exercise that asks for this erratum's correction (then the display is shown as printed,
+    and nothing more is said); ``told``, the words of the step before (not said twice)."""
     W = WORDS[lang]
     shown = st.entry.latex if exercise is not None else shown_latex(st)
     out = [_connect(st, index, by_id, lang) + "\n" + tagged_display(shown, tag, f"h:{st.label}")]
     if exercise is not None:
-        return out[0] + "\\emph{" + W["erratum_exercise"].format(ref=f"\\ref{{ex:{exercise}}}") + "}\n\n"
+        return out[0] + "\\emph{" + W["erratum_exercise"].format(ref=f"\\ref{{ex:{exercise}}}") + "}\n\n", told
     own = prose.entry(st.entry.id).step.get(lang)
-    if own or (lang == "en" and st.derivation is not None):
-        out.append((own or paragraphs(clean_prose(st.derivation.doc))) + "\n\n")
+    words = own or (paragraphs(cite(clean_prose(st.derivation.doc), citing(by_id.values())))
+                    if lang == "en" and st.derivation is not None else "")
+    if words:
+        out.append((W["same_step"] if words == told else words) + "\n\n")
     status = st.outcome.status
     if st.is_erratum:
         out.append("\\emph{" + W["erratum"].format(kind=kind_name(st.erratum.kind, lang)) + "}\n"
@@ -154,7 +159,7 @@ def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose:
                                  if doubt else W["cleared"]) + "}\n\n")
     elif status is Status.UNEXPECTED:
         out.append("\\emph{" + W["unverified"] + "}\n\n")
-    return "".join(out)
+    return "".join(out), words or told
 
 
 def _words(ex: Exercise, which: str, by_id: dict[str, Step], lang: str) -> str:

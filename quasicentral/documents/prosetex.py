@@ -273,6 +273,18 @@ def with_math(s: str, letters: bool = True, lang: str = "en") -> str:
 
 
 _NEIGHBOURS = frozenset(set(" =+-,;:()[]/*<>0123456789"))
+#: words after which an opening "A" is a variable, not the article: "A and B are constants"
+_NOT_AFTER_ARTICLE = frozenset({"and", "or", "is", "are", "was", "equals", "sin", "cos", "tan", "exp", "ln", "log",
+                                "sinh", "cosh", "tanh", "e", "cot", "of", "in", "at"})
+
+
+def _word_at(tokens: list[tuple[bool, str]], i: int) -> str:
+    """The word of prose that starts at token i ('' where none does)."""
+    out = []
+    while i < len(tokens) and not tokens[i][0] and tokens[i][1].isalpha():
+        out.append(tokens[i][1])
+        i += 1
+    return "".join(out)
 
 
 def _lone_variable(tokens: list[tuple[bool, str]], k: int, words: frozenset = frozenset("aI")) -> bool:
@@ -285,6 +297,10 @@ def _lone_variable(tokens: list[tuple[bool, str]], k: int, words: frozenset = fr
     then = tokens[k + 3] if k + 3 < len(tokens) else (False, "")
     if tex == "d" or (tex in words and (tex in "aI" or (nxt[1] == " " and not after[0] and after[1][:1].isalpha()))):
         return False
+    opening = k == 0 or (prev[1] == " " and k > 1 and tokens[k - 2][1] in ".:" and not tokens[k - 2][0])
+    if tex == "A" and opening and nxt[1] == " " and _word_at(tokens, k + 2) not in _NOT_AFTER_ARTICLE \
+            and _word_at(tokens, k + 2)[:1].islower():
+        return False  # the article opening a sentence, "A definition: …"
     prev_ok = prev[0] or prev[1] in _NEIGHBOURS
     # before a full stop only at the end of a sentence ("law of S."), not in "t. j." or "e.g."
     end_of_sentence = nxt[1] in ".?!" and (k + 2 >= len(tokens) or (

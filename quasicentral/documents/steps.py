@@ -225,7 +225,10 @@ def citing(steps) -> dict[str, str]:
     out = {}
     for st in steps:
         local = st.entry.id.split(":", 1)[-1]
-        if "-" in local and any(c.isalpha() for c in local):
+        parts = local.split("-")
+        # an id, not an English compound ("small-angle"): a capital, a digit or a one-letter part
+        if len(parts) > 1 and any(c.isalpha() for c in local) and (
+                any(c.isupper() or c.isdigit() for c in local) or any(len(p) == 1 for p in parts)):
             out[local] = st.tag
     return out
 
