@@ -29,6 +29,7 @@ def report_tex(rec: TextRecords, lang: str) -> str:
              title_block(title, W["report"])]
     parts.append(_summary(steps, groups, prose, lang))
     parts.append(_found_table(groups, prose, lang))
+    parts.append(_numbering(steps, lang))
     parts.append("\\clearpage\n\\tableofcontents\n\n")
     parts.append(_causes_section(groups, by_id, prose, lang))
     parts.append(_cleared_section(steps, prose, lang))
@@ -112,6 +113,16 @@ def _found_table(groups: list[CauseGroup], prose: TextProse, lang: str) -> str:
     out.append("\\bottomrule\n\\end{longtable}\n}\n")
     out.append(W["found_more"].format() + "\n\n")
     return "".join(out)
+
+
+def _numbering(steps: list[Step], lang: str) -> str:
+    """How the report names the displays, explained once with an example of each kind (a text
+    that numbers every display needs no word on it)."""
+    numbered = next((s.tag for s in steps if s.entry.number), None)
+    unnumbered = next((s.tag for s in steps if not s.entry.number), None)
+    if numbered is None or unnumbered is None:
+        return ""
+    return WORDS[lang]["numbering"].format(numbered=numbered, unnumbered=unnumbered) + "\n\n"
 
 
 def _errata_table(steps: list[Step], lang: str) -> str:

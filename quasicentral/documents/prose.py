@@ -95,9 +95,10 @@ WORDS = MappingProxyType({
         "col_cause": "Cause", "col_kind": "Kind", "col_displays": "Equations",
         "witness_in": "in {ref}: {values}",
         "found_more": (r"Section~\ref{{sec:errata}} explains each cause; appendix~\ref{{sec:sidebyside}} sets "
-                       r"every erratum's printed and corrected form side by side.  Numbers in parentheses, "
-                       r"such as (28), are the text's own; numbers in brackets, such as [61], name the "
-                       r"displays the text leaves unnumbered, counted through the text."),
+                       r"every erratum's printed and corrected form side by side."),
+        "numbering": (r"Numbers in parentheses, such as {numbered}, are the text's own; numbers in brackets, "
+                      r"such as {unnumbered}, name the displays the text leaves unnumbered, counted through "
+                      r"the text."),
         "source_generic": (r"``Printed'' means the text as its catalog transcribes it (the LaTeX of each "
                            r"display and its reading in sympy); a slip of the transcription would show here as "
                            r"an erratum."),
@@ -232,9 +233,10 @@ WORDS = MappingProxyType({
         "col_cause": "Příčina", "col_kind": "Druh", "col_displays": "Rovnice",
         "witness_in": "v~{ref}: {values}",
         "found_more": (r"Oddíl~\ref{{sec:errata}} vysvětluje každou příčinu; příloha~\ref{{sec:sidebyside}} "
-                       r"staví vedle sebe vytištěný a~opravený tvar každé chyby.  Čísla v~kulatých závorkách, "
-                       r"např. (28), jsou čísla textu; čísla v~hranatých závorkách, např. [61], označují "
-                       r"nečíslované rovnice textu, počítané od začátku textu."),
+                       r"staví vedle sebe vytištěný a~opravený tvar každé chyby."),
+        "numbering": (r"Čísla v~kulatých závorkách, např. {numbered}, jsou čísla textu; čísla v~hranatých "
+                      r"závorkách, např. {unnumbered}, označují nečíslované rovnice textu, počítané od "
+                      r"začátku textu."),
         "source_generic": (r"„Vytištěno“ znamená text tak, jak jej přepisuje jeho katalog (LaTeX každé "
                            r"rovnice a~její čtení v~programu sympy); chyba přepisu by se zde ukázala jako "
                            r"tisková chyba."),
