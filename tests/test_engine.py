@@ -811,3 +811,19 @@ def test_a_limit_without_value_and_a_term_at_a_pole_are_seen():
     why = undefined_term(sp.Sum(1 / (j * (j - 1)), (j, 1, n)), {n: sp.Integer(5)})
     assert why is not None and why.code is Code.UNDEFINED_TERM and why["index"] == "1"
     assert undefined_term(sp.Sum(1 / (j * (j + 1)), (j, 1, n)), {n: sp.Integer(5)}) is None
+
+
+def test_a_removable_singularity_far_from_the_sequences_reach():
+    """The critically damped limit γ → ω0 of A e^(−γt)(cos ω_d t + (γ/ω_d) sin ω_d t), ω_d =
+    √(ω0² − γ²), at ω0·t ≈ 38: the sequences γ = ω0 ± 1/n start where e^(−γt)·cosh(…) is 10^30
+    times the limit and lost every digit (a newcomer's text: 2 of 20 points inconclusive); two
+    tiny steps on each side settle it."""
+    A, g, t, w0 = sp.symbols("A gamma t omega0", positive=True)
+    wd = sp.sqrt(w0**2 - g**2)
+    f = mpeval.mp_function(sp.Limit(A * sp.exp(-g * t) * (sp.cos(wd * t) + g / wd * sp.sin(wd * t)), g, w0),
+                           (A, t, w0))
+    for dps in (30, 60):
+        with mpmath.workdps(dps):
+            a, tt, ww = mpmath.mpf(1), mpmath.mpf("8.82"), mpmath.mpf("4.31")
+            exact = a * mpmath.exp(-ww * tt) * (1 + ww * tt)
+            assert abs(f(a, tt, ww) - exact) < mpmath.mpf(10) ** (-dps + 5) * exact

@@ -319,6 +319,8 @@ def _limit(form, outer):
         x0 = at(*vals)
         g = lambda t: f(t, *vals)  # noqa: E731
         direct = _continuous_value(g, x0, sides)
+        if direct is None:
+            direct = _small_steps(g, x0, sides)
         if direct is not None:
             return direct
         out = []
@@ -349,6 +351,38 @@ def _continuous_value(g, x0, sides):
         return None
     tol = mpmath.mpf(10) ** (-dps // 4) * max(1, abs(v0))
     return v0 if all(mpmath.isfinite(v) and abs(v - v0) <= tol for v in near) else None
+
+
+#: the step exponents of :func:`_small_steps`: h = 10^(−dps/2 − k)·max(1, |x0|), for each k
+SMALL_STEPS = (1, 2)
+
+
+def _small_steps(g, x0, sides):
+    """The limit of g at x0 where g cannot be evaluated at x0 (0/0: sin(ω_d t)/ω_d at ω_d = 0)
+    but is smooth on each side: Richardson's step-halving 2g(x0 + h/2) − g(x0 + h), whose error
+    is O(h²), from two tiny steps h (:data:`SMALL_STEPS`) at twice the working precision; the
+    sides and the steps must agree to :data:`AGREEMENT_FRACTION` of the working digits, else
+    None and the sequences decide.  The sequences (x0 + 1/n) start a unit away, where a function
+    such as e^(−γt)·cosh(…) is 10^30 times its limit and their extrapolation loses every digit."""
+    if not mpmath.isfinite(x0):
+        return None
+    dps = mpmath.mp.dps
+    tol = mpmath.mpf(10) ** (-AGREEMENT_FRACTION * dps)
+    try:
+        with mpmath.workdps(2 * dps + 10):
+            found = []
+            for side in sides:
+                for k in SMALL_STEPS:
+                    h = mpmath.mpf(10) ** (-(dps // 2 + k)) * max(1, abs(x0))
+                    found.append(2 * g(x0 + side * h / 2) - g(x0 + side * h))
+    except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence):
+        return None
+    if not all(mpmath.isfinite(v) for v in found):
+        return None
+    size = max(abs(v) for v in found)
+    if any(abs(v - found[0]) > tol * size for v in found[1:]):
+        return None
+    return +found[-1]
 
 
 def _derivative(form, outer):
