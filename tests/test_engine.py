@@ -827,3 +827,15 @@ def test_a_removable_singularity_far_from_the_sequences_reach():
             a, tt, ww = mpmath.mpf(1), mpmath.mpf("8.82"), mpmath.mpf("4.31")
             exact = a * mpmath.exp(-ww * tt) * (1 + ww * tt)
             assert abs(f(a, tt, ww) - exact) < mpmath.mpf(10) ** (-dps + 5) * exact
+
+
+def test_a_verdict_the_timeout_decided_is_not_kept():
+    """The cache key leaves the timeout out (it bounds the work, it does not change a verdict that
+    finishes), so a verdict that ran out of time must not be kept: `--timeout 600` after a run at
+    120 s read back "ran out of its 120 s" (a newcomer's finding)."""
+    from quasicentral.engine import run
+
+    timed_out = {"outcome": {"verdict": {"reason": {"code": Code.OUT_OF_TIME.value, "fields": {}}}}}
+    assert run._out_of_time(timed_out)
+    assert not run._out_of_time({"outcome": {"verdict": {"reason": {"code": Code.AGREES.value}},
+                                             "corrected_verdict": None}})

@@ -278,7 +278,10 @@ def witness_short(w, lang: str, point: bool = True) -> str:
     digits = 4  # a few digits — as many more as it takes to tell the two values apart (a rounding)
     while digits < 15 and number(printed, lang, digits) == number(corrected, lang, digits):
         digits += 1
-    vals = W["vs"].format(p=f"${number(printed, lang, digits)}$", c=f"${number(corrected, lang, digits)}$")
+    # an identity's witness holds its two sides, not a printed and a correct value
+    sides = getattr(q, "code", None) is Code.Q_SIDES or q == "the left and the right side"
+    vals = W["vs_sides" if sides else "vs"].format(p=f"${number(printed, lang, digits)}$",
+                                                   c=f"${number(corrected, lang, digits)}$")
     return (f"{W['at']} {pts}: " if pts else "") + vals
 
 

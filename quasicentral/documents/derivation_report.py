@@ -74,7 +74,8 @@ def _summary(steps: list[Step], groups: list[CauseGroup], prose: TextProse, lang
                          prose.source.get(lang) or W["source_generic"]) if p]
     out = [f"\\section*{{{W['summary']}}}\n\\phantomsection\\addcontentsline{{toc}}{{section}}{{{W['summary']}}}\n",
            "".join(p + "\n\\medskip\n\n" for p in story),
-           W["checked"].format(n=len(steps)) + "\n\n",
+           W["checked_identity" if all(s.mode is Mode.IDENTITY for s in steps) else "checked"].format(n=len(steps))
+           + "\n\n",
            "\\begin{center}\n\\begin{tabular}{@{}lrl@{}}\n\\toprule\n" + "\n".join(rows)
            + "\n\\bottomrule\n\\end{tabular}\n\\end{center}\n"]
     unexpected = [s for s in steps if s.outcome.status is Status.UNEXPECTED]
@@ -205,7 +206,9 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
     # as re-derived
     out.append(f"\\textbf{{{W['derived']}:}}")
     mode = st.mode
-    if st.derivation is None:
+    if mode is Mode.IDENTITY:
+        out.append(" " + W["identity_rederived"] + "\n\n")
+    elif st.derivation is None:
         out.append(" " + W["no_derivation"] + "\n\n")
     elif st.error:
         out.append(" " + W["derivation_failed"] + "\n\n")

@@ -17,6 +17,7 @@ from quasicentral.documents.prose import WORDS, TextProse, join_refs
 from quasicentral.documents.steps import (Step, TextRecords, cause_groups, cause_note, cite, citing, kind_name,
                                           section_title, sections_of, step_text)
 from quasicentral.engine.exercises import REF, ExerciseKind, ExerciseSpec
+from quasicentral.engine.registry import Mode
 from quasicentral.engine.verdict import Status
 
 
@@ -84,6 +85,9 @@ def handout_tex(rec: TextRecords, lang: str, solutions: bool = False) -> str:
     # left to them (the teacher's edition corrects it in place)
     exercises = exercises_for(rec)
     hidden = {} if solutions else _hidden(exercises, steps)
+    # nor does it say how a display it asks the students to derive follows
+    asked = {} if solutions else {ex.step.entry.id: n for n, ex in enumerate(exercises, 1)
+                                  if ex.kind is ExerciseKind.DERIVE}
     for section, group in sections_of(steps):
         parts.append(f"\\section{{{pdf_safe(section_title(text, prose, section, lang))}}}\n")
         intro = prose.section_intro(section, lang)
@@ -91,7 +95,8 @@ def handout_tex(rec: TextRecords, lang: str, solutions: bool = False) -> str:
             parts.append(intro + "\n\n")
         told = ""  # the step said last: a derivation that covers several displays is told once
         for i, st in enumerate(group):
-            step, told = _handout_step(st, i, by_id, tags[st.entry.id], prose, lang, hidden.get(st.entry.id), told)
+            step, told = _handout_step(st, i, by_id, tags[st.entry.id], prose, lang, hidden.get(st.entry.id), told,
+                                       asked.get(st.entry.id))
             parts.append(step)
     if exercises:
         parts.append(f"\\section{{{W['exercises']}}}\n\\begin{{enumerate}}\n")
@@ -135,10 +140,11 @@ def _connect(st: Step, index: int, by_id: dict[str, Step], lang: str) -> str:
 
 
 def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose: TextProse, lang: str,
-                  exercise: int | None = None, told: str = "") -> tuple[str, str]:
+                  exercise: int | None = None, told: str = "", asked: int | None = None) -> tuple[str, str]:
     """One step told to a student, and the words of its step; ``exercise``, the number of the
     exercise that asks for this erratum's correction (then the display is shown as printed,
-    and nothing more is said); ``told``, the words of the step before (not said twice)."""
+    and nothing more is said); ``told``, the words of the step before (not said twice); ``asked``,
+    the number of the exercise that asks to derive it (its words are then left to it)."""
     W = WORDS[lang]
     shown = st.entry.latex if exercise is not None else shown_latex(st)
     out = [_connect(st, index, by_id, lang) + "\n" + tagged_display(shown, tag, f"h:{st.label}")]
@@ -147,7 +153,9 @@ def _handout_step(st: Step, index: int, by_id: dict[str, Step], tag: str, prose:
     own = prose.entry(st.entry.id).step.get(lang)
     words = own or (paragraphs(cite(clean_prose(st.derivation.doc), citing(by_id.values())))
                     if lang == "en" and st.derivation is not None else "")
-    if words:
+    if asked is not None:
+        out.append(W["derive_exercise"].format(ref=f"\\ref{{ex:{asked}}}") + "\n\n")
+    elif words and st.mode is not Mode.IDENTITY:  # an identity's generic words say nothing here
         out.append((W["same_step"] if words == told else words) + "\n\n")
     status = st.outcome.status
     if st.is_erratum:

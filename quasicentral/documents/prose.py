@@ -41,6 +41,7 @@ WORDS = MappingProxyType({
         "cleared": r"This step looks suspicious, but the check confirms it.",
         "cleared_doubt": r"A reader may doubt this step --- {doubt} --- but it is right: the check confirms it.",
         "same_step": r"The same argument gives this relation.",
+        "derive_exercise": r"How it follows is exercise~{ref}.",
         "erratum_exercise": r"This display contains an error, as the text prints it: find it in exercise~{ref}.",
         "unverified": r"This step has not been verified yet.",
         "exercises": "Exercises",
@@ -80,6 +81,12 @@ WORDS = MappingProxyType({
                     r"error found is backed by a witness, a point at which the printed and the corrected "
                     r"form differ, certified by ball arithmetic where it could be "
                     r"(section~\ref{{sec:method}})."),
+        "checked_identity": (r"This report checks the {n} equations of the text one by one, each as printed on "
+                             r"its stated constraints: symbolically where sympy proves its two sides equal, "
+                             r"otherwise numerically at points drawn from its domain at 30 and 60 digits; every "
+                             r"error found is backed by a witness, a point at which the two sides differ, "
+                             r"certified by ball arithmetic where it could be (section~\ref{{sec:method}})."),
+        "identity_rederived": "none needed: the relation is checked as printed, on its stated constraints.",
         "count_checked": "Equations checked",
         "section": "section",
         "count_verified": "verified",
@@ -155,6 +162,7 @@ WORDS = MappingProxyType({
         "certified_no": "not certified",
         "at": "at",
         "vs": "printed {p}, correct {c}",
+        "vs_sides": "left side {p}, right side {c}",
         "corrected_form": "The corrected form is",
         "table_eq": "Eq.", "table_printed": "Printed", "table_corrected": "Corrected",
         "table_witness": "Witness", "table_cert": "Cert.",
@@ -182,6 +190,7 @@ WORDS = MappingProxyType({
         "cleared": r"Tento krok vypadá podezřele, ověření však potvrdilo, že je správný.",
         "cleared_doubt": r"Tento krok může vzbudit pochybnost --- {doubt} --- je však správný, jak potvrdilo ověření.",
         "same_step": r"Stejnou úvahou dostaneme i~tento vztah.",
+        "derive_exercise": r"Jak z~toho plyne, je úlohou cvičení~{ref}.",
         "erratum_exercise": r"Tato rovnice je v~textu vytištěna s~chybou: najděte ji ve cvičení~{ref}.",
         "unverified": r"Tento krok zatím nebyl ověřen.",
         "exercises": "Cvičení",
@@ -218,7 +227,13 @@ WORDS = MappingProxyType({
                     r"v~bodech fyzikálního oboru na 30 a~60 platných číslic.  Každou nalezenou chybu "
                     r"dokládá protipříklad, bod, ve kterém se vytištěný a~opravený tvar liší, a~kde to šlo, "
                     r"je rozdíl potvrzen intervalovou aritmetikou (oddíl~\ref{{sec:method}})."),
-        "count_checked": "Ověřených rovnic",
+        "checked_identity": (r"Tato zpráva ověřuje jednu po druhé všech {n} rovnic textu, každou tak, jak je "
+                             r"vytištěna, na jejím uvedeném oboru: symbolicky, kde sympy dokáže, že se obě strany "
+                             r"rovnají, jinak numericky v~bodech jejího oboru na 30 a~60 platných číslic; každou "
+                             r"nalezenou chybu dokládá protipříklad, bod, ve kterém se obě strany liší, a~kde to "
+                             r"šlo, je rozdíl potvrzen intervalovou aritmetikou (oddíl~\ref{{sec:method}})."),
+        "identity_rederived": "není třeba: vztah se ověřuje tak, jak je vytištěn, na svém uvedeném oboru.",
+        "count_checked": "Kontrolovaných rovnic",
         "section": "oddíl",
         "count_verified": "správně",
         "count_errata": "tiskových chyb",
@@ -291,6 +306,7 @@ WORDS = MappingProxyType({
         "certified_no": "nepotvrzeno",
         "at": "v~bodě",
         "vs": "vytištěno {p}, správně {c}",
+        "vs_sides": "levá strana {p}, pravá strana {c}",
         "corrected_form": "Opravený tvar je",
         "table_eq": "Rovnice", "table_printed": "Vytištěno", "table_corrected": "Opraveno",
         "table_witness": "Protipříklad", "table_cert": "Potvrz.",
@@ -380,11 +396,12 @@ class TextProse:
 #: What a text without report.toml is called and told with.
 GENERIC = MappingProxyType({
     "intro": {
-        "en": (r"Every equation of the text was derived again with sympy and compared with the print; "
-               r"where the print is wrong, the corrected form is shown and the printed one is quoted "
-               r"next to it."),
-        "cs": (r"Každý vztah textu jsme znovu odvodili v~programu sympy a~porovnali s~tiskem; kde je "
-               r"v~tisku chyba, uvádíme opravený tvar a~vytištěnou podobu připojujeme."),
+        "en": (r"Every equation of the text was checked against the print (derived again with sympy "
+               r"where the text derives it); where the print is wrong, the corrected form is shown and "
+               r"the printed one is quoted next to it."),
+        "cs": (r"Každý vztah textu jsme ověřili proti tisku (a~kde jej text odvozuje, znovu odvodili "
+               r"v~programu sympy); kde je v~tisku chyba, uvádíme opravený tvar a~vytištěnou podobu "
+               r"připojujeme."),
     },
     "figures_intro": {
         "en": r"The figures are drawn from the derived closed forms and from the toolkit's measurements.",

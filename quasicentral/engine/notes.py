@@ -52,11 +52,15 @@ _SENTENCE = MappingProxyType({
     "en": ("at {at} the printed form gives {p}, the correct one {c} ({q}{r}; {cert})",
            "certified", "not certified",
            "no numeric witness (the printed relation is dimensionally inconsistent)",
-           "the printed value is {p}, the correct one {c} ({q}{r}; {cert})", "; relative difference "),
+           "the printed value is {p}, the correct one {c} ({q}{r}; {cert})", "; relative difference ",
+           "at {at} the left side is {p}, the right side {c} ({r}{cert})",
+           "the left side is {p}, the right side {c} ({r}{cert})"),
     "cs": ("v bodě {at} dává vytištěný tvar {p}, správný {c} ({q}{r}; {cert})",
            "certifikováno", "necertifikováno",
            "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)",
-           "vytištěná hodnota je {p}, správná {c} ({q}{r}; {cert})", "; relativní rozdíl "),
+           "vytištěná hodnota je {p}, správná {c} ({q}{r}; {cert})", "; relativní rozdíl ",
+           "v bodě {at} je levá strana {p}, pravá {c} ({r}{cert})",
+           "levá strana je {p}, pravá {c} ({r}{cert})"),
 })
 
 
@@ -79,8 +83,14 @@ def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
         p, c = short_value(w.printed, more), short_value(w.corrected, more)
     # a value with no point (a printed rounding, a special value) is said without one
     r = words[5] + style.decimal(short_value(w.relative_difference, digits and 2)) if w.relative_difference else ""
-    return words[0 if at else 4].format(at=at, q=render(w.quantity, lang), p=style.decimal(p),
-                                        c=style.decimal(c), r=r, cert=words[1] if w.certified else words[2])
+    from quasicentral.engine.reasons import Code
+
+    sides = getattr(w.quantity, "code", None) is Code.Q_SIDES  # an identity: its two sides, no "correct" one
+    template = words[6 if at else 7] if sides else words[0 if at else 4]
+    if sides:
+        r = r[2:] + "; " if r else ""  # "relative difference 1.9; certified"
+    return template.format(at=at, q=render(w.quantity, lang), p=style.decimal(p),
+                           c=style.decimal(c), r=r, cert=words[1] if w.certified else words[2])
 
 
 def render_note(note: str, w, lang: str = "en", digits: int | None = None) -> str:

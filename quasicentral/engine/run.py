@@ -186,6 +186,15 @@ def cache_keys(ws, entries: list[catalog.Entry], opts: Options) -> dict[str, str
                                             sort_keys=True).encode()).hexdigest() for e in entries}
 
 
+def _out_of_time(record: dict) -> bool:
+    """Whether an outcome's record is the timeout's (the check or its corrected form ran out of
+    time), which the cache key — the timeout bounds the work, it is not part of the key — must
+    not keep."""
+    o = record.get("outcome", {})
+    return any((v or {}).get("reason", {}).get("code") == Code.OUT_OF_TIME.value
+               for v in (o.get("verdict"), o.get("corrected_verdict")))
+
+
 def cache_file(key: str) -> Path:
     return cache_dir() / f"{key}.json"
 
@@ -244,6 +253,8 @@ def run(ws, entries: list[catalog.Entry], opts: Options, use_cache: bool = True,
         try:
             cache_dir().mkdir(parents=True, exist_ok=True)
             for eid in todo:
+                if _out_of_time(results[eid]):
+                    continue  # a verdict the timeout decided is not kept: a longer one may settle it
                 write_text(cache_file(key_of[eid]), json.dumps(results[eid], sort_keys=True))
         except OSError:
             pass  # a read-only cache is not an error
