@@ -17,6 +17,7 @@ from sympy.printing.pycode import MpmathPrinter
 from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_mpf, ball_function, ball_value,
                                          compile_path, flint_precision, mp_to_acb)
 from quasicentral.notation.integrals import infinite_end, prepare
+from quasicentral.notation.series import geometric_sum
 from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
 from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
@@ -256,7 +257,7 @@ def _series(form, outer):
             return mpmath.fprod(f(k) for k in ks) if product else mpmath.fsum(f(k) for k in ks)
         interval = [a if not mpmath.isfinite(a) else _integer(a), b if not mpmath.isfinite(b) else _integer(b)]
         if not product:
-            direct = _geometric_sum(f, *interval)
+            direct = geometric_sum(f, *interval)
             if direct is not None:
                 return direct
         total = mpmath.nprod if product else mpmath.nsum
@@ -265,46 +266,6 @@ def _series(form, outer):
             second = total(f, interval)
         return _agreeing(first, second)
     return value
-
-
-#: the most terms a series is summed term by term before extrapolation takes over
-SERIES_TERMS = 400
-#: the largest ratio of successive terms at which the tail is bounded geometrically
-SERIES_RATIO = 0.95
-#: the last terms whose ratios bound the tail
-SERIES_WINDOW = 8
-
-
-def _geometric_sum(f, a, b):
-    """Σ f(n) over a half-line (or the whole line, as two), term by term while the terms fall
-    off at least geometrically: the sum stops where the tail bound |t|·r/(1 − r), r the largest
-    ratio of the last :data:`SERIES_WINDOW` terms, is below the working precision.  None where
-    the terms do not fall off so within :data:`SERIES_TERMS` (a series that converges slowly,
-    or not: extrapolation, two ways, decides).  A power series inside its disc of convergence —
-    most series of a formula collection — takes a few dozen terms this way, where Richardson's
-    and Shanks's extrapolations take hundreds of evaluations and a quadratic cost."""
-    if not mpmath.isfinite(a) and not mpmath.isfinite(b):
-        right, left = _geometric_sum(f, 0, mpmath.inf), _geometric_sum(f, -mpmath.inf, -1)
-        return None if right is None or left is None else right + left
-    start, step = (a, 1) if mpmath.isfinite(a) else (b, -1)
-    eps = mpmath.mpf(2) ** (-mpmath.mp.prec - 4)
-    with mpmath.workprec(mpmath.mp.prec + 20):
-        total, last, ratios = mpmath.mpf(0), None, []
-        for i in range(SERIES_TERMS):
-            t = f(start + step * i)
-            total += t
-            size = abs(t)
-            if last is not None and last > 0:
-                ratios = (ratios + [size / last])[-SERIES_WINDOW:]
-            if size > 0:
-                last = size
-            if len(ratios) == SERIES_WINDOW:
-                r = max(ratios)
-                if r < SERIES_RATIO and size * r / (1 - r) <= eps * abs(total):
-                    return +total
-            if not mpmath.isfinite(total):
-                return None
-    return None
 
 
 def _limit(form, outer):
