@@ -718,12 +718,10 @@ def test_students_handout_gives_no_answer(generated, records):
                     assert shown not in students and shown in teacher, (rec.id, ex.spec.id, shown)
 
 
-def test_exercise_answers_are_the_physics():
+def test_exercise_answers_are_the_physics(records):
     """The banks' answers, recomputed here from the physics by hand (mpmath): the period at 30°
     and 90°, the amplitude at which T0 errs by 1 %, the halving time and length of the angular
     momentum, the damped frequency of figs. 7 and 8, the critical damping."""
-    from quasicentral.engine.exercises import read_bank, settle
-
     expected = {
         "period-30": 4 * mpmath.sqrt(1 / mpmath.mpf("9.81")) * mpmath.ellipk(mpmath.sin(mpmath.pi / 12) ** 2),
         "period-90": 4 * mpmath.sqrt(1 / mpmath.mpf("9.81")) * mpmath.ellipk(mpmath.mpf(1) / 2),
@@ -734,7 +732,7 @@ def test_exercise_answers_are_the_physics():
         "critical-damping": mpmath.sqrt(mpmath.mpf("9.81")),
     }
     got = {}
-    for rec in report.records_for(WS, TEXTS, Options()):
+    for rec in records:
         for ex in rec.exercises:
             if ex.answer:
                 got[ex.spec.id] = ex
@@ -743,14 +741,14 @@ def test_exercise_answers_are_the_physics():
         assert got[eid].answer == mpmath.nstr(value, got[eid].spec.digits, min_fixed=-4, max_fixed=6), eid
 
 
-def test_a_bank_that_does_not_hold_is_refused(tmp_path):
+def test_a_bank_that_does_not_hold_is_refused(tmp_path, records):
     """A derive exercise whose premises the result does not rest on, a misprint that is no
     erratum, a compute exercise on an entry without its unknown: each one error naming the
     file and the exercise."""
     from quasicentral.engine.catalog import CatalogError
     from quasicentral.engine.exercises import read_bank, settle
 
-    rec = next(r for r in report.records_for(WS, TEXTS, Options()) if r.id == "pendulum")
+    rec = next(r for r in records if r.id == "pendulum")
     entries = dict(rec.text.entries)
     statuses = {s.entry.id: s.outcome.status for s in rec.steps}
     uses = {s.entry.id: s.uses for s in rec.steps}
