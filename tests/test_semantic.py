@@ -165,7 +165,7 @@ AUX = "auxiliary quantities of the neighbouring formulas or the prose are not at
 KNOWN = {
     **{f"dlmf-19:{n}": PV for n in ("19.6.5", "19.6.6", "19.6.15-d", "19.20.8-b", "19.20.9", "19.20.14", "19.20.17",
                                     "19.21.12", "19.25.4")},
-    **{f"dlmf-19:{n}": QUAD for n in ("19.16.11", "19.16.12", "19.16.19", "19.19.3", "19.23.10", "19.28.1", "19.28.2",
+    **{f"dlmf-19:{n}": QUAD for n in ("19.16.9", "19.16.11", "19.16.12", "19.16.19", "19.19.3", "19.23.10", "19.28.1", "19.28.2",
                                       "19.28.3", "19.28.4")},
     "dlmf-19:19.28.9": "DLMF: holds for real x, y with x + y ≤ π/2 only; no condition is printed",
     **{f"dlmf-22:{n}": QUAD for n in ("22.16.24", "22.16.25", "22.16.26")},
