@@ -42,7 +42,7 @@ SYMPY_NAMES = ["sqrt", "sin", "cos", "tan", "cot", "sec", "csc", "asin", "acos",
                "gamma", "beta", "digamma", "hyper", "appellf1", "rf", "binomial", "factorial", "Sum",
                "Product", "Integral", "Derivative", "Limit", "O", "Abs", "re", "im", "arg", "conjugate",
                "sign", "floor", "Eq", "Ne", "Lt", "Le", "Gt", "Ge", "And", "Or", "Rational", "Tuple",
-               "Min", "Max", "Function"]
+               "Min", "Max", "Function", "Subs"]
 
 
 class Unevaluable(Exception):

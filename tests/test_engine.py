@@ -839,3 +839,16 @@ def test_a_verdict_the_timeout_decided_is_not_kept():
     assert run._out_of_time(timed_out)
     assert not run._out_of_time({"outcome": {"verdict": {"reason": {"code": Code.AGREES.value}},
                                              "corrected_verdict": None}})
+
+
+def test_a_function_at_its_zero_with_a_rounded_argument_is_an_exact_zero():
+    """cn(K(k), k) = 0: K is rounded at every working precision, so cn(K) is 10^(−31) at 30
+    digits and 10^(−61) at 60 — no magnitude to judge it against, but a value that falls with
+    every digit added (Tables 22.4 and 22.5: 72 entries were "unstable").  A true value that small
+    is computed to its relative precision and does not fall: it stays a disagreement."""
+    from quasicentral.notation.special import EllipticK, JacobiCN
+
+    zero = numeric(Claim(JacobiCN(EllipticK(k), k), sp.Integer(0), V), Domain(), "cn-K", OPTS, TABLE)
+    assert isinstance(zero, Verified) and zero.reason["zeros"] == zero.points
+    tiny = numeric(Claim(sp.exp(-100) * (1 + k**2), sp.Integer(0), V), Domain(), "tiny", OPTS, TABLE)
+    assert isinstance(tiny, Refuted), "exp(−100)(1 + k²) is no rounding noise: it does not fall with the precision"

@@ -146,9 +146,11 @@ def _unknown(source: str, ns: dict) -> list[str]:
 
 
 def test_import_is_reproducible(rendered):
-    """Regenerating writes the catalogs byte for byte (and no other file)."""
+    """Regenerating writes the catalogs byte for byte (and no other file; the errata, which the
+    checker's findings wrote by hand, are not generated)."""
     files = rendered[1]
-    kept = {p: p.read_text(encoding="utf-8") for src in D.TEXTS.values() for p in src.rglob("*.toml")}
+    kept = {p: p.read_text(encoding="utf-8") for src in D.TEXTS.values() for p in src.rglob("*.toml")
+            if "errata" not in p.relative_to(src).parts}
     assert set(files) == set(kept)
     for path, text in files.items():
         assert text == kept[path], path
@@ -179,16 +181,16 @@ KNOWN = {
                              "e_j = ℘(ω_j), 2ω one of its periods and the sign ±; this helper samples them "
                              "freely" for n in (35, 37, 38, 39, 40)},
     "dlmf-19:19.26.27": "the branch of s = x + √(x² − θ) for θ > x² (LaCASt's constraint is cut)",
-    "dlmf-22:22.2.11": "the semantic LaTeX names Jacobi's θ_j(z|τ); the print means Neville's θ_p, θ_q",
     "dlmf-22:22.5.1-dc-K+iKp": "DLMF: dc'(K + iK′) is −k (from dn′ = ik′ and cn = −ik′/k of the same table), printed k",
     "dlmf-22:22.8.23": "DLMF: with z_1 + … + z_4 = 2K the printed determinant is not 0; with a third column sn z_j it is",
     "dlmf-22:22.9.23": "DLMF: the last term of the right side repeats s_{2,3}d_{2,3}; with s_{3,3}d_{3,3} it holds",
+    "dlmf-22:22.19.8": "DLMF: the dn solution needs the modulus √(2 − 1/η), the prose prints its reciprocal",
     **{i: AUX for i in (
         *[f"dlmf-19:19.29.{n}" for n in (3, 4, 5, 7, 8, 9, 17, 19, 20, 21, 22, 23, 24, 25, 28, 29, 30, 31, 32, 33)],
         "dlmf-19:19.30.3", "dlmf-19:19.32.3", "dlmf-19:19.33.2", "dlmf-19:19.33.4", "dlmf-19:19.33.5", "dlmf-19:19.33.6",
         "dlmf-19:19.33.8", "dlmf-19:19.33.12", "dlmf-19:19.34.1", "dlmf-19:19.34.5", "dlmf-19:19.34.6", "dlmf-19:19.36.7",
         "dlmf-19:19.36.9", "dlmf-19:19.12.5", "dlmf-22:22.20.5", "dlmf-19:19.20.16",
-        *[f"dlmf-22:22.18.{n}" for n in (1, 3, 4, 7)], *[f"dlmf-22:22.19.{n}" for n in range(1, 10)])},
+        *[f"dlmf-22:22.18.{n}" for n in (1, 3, 4, 7)])},
 }
 
 
@@ -219,6 +221,6 @@ def test_both_sides_agree_numerically(tid, entry):
         outcome = D.check(entry, TEXTS[tid])
     except D.Unevaluable as exc:
         pytest.skip(str(exc))
-    if not outcome.ok and entry["kind"] == "definition":
+    if not outcome.ok and (entry["kind"] == "definition" or entry.get("defines")):
         pytest.xfail("a definition or premise: its symbols are given by it, not sampled")
     assert outcome.ok, f"{outcome.reason} at {outcome.point}: {outcome.values}"

@@ -26,7 +26,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path[:0] = [str(HERE), str(ROOT)]
 
-from dlmf_overrides import (CHAPTER_WHERE, CHAPTERS, INTEGER_NAMES, INTEGER_SYMBOL, MOVED, OVERRIDES,  # noqa: E402
+from dlmf_overrides import (CHAPTER_WHERE, CHAPTERS, CONVENTIONS, INTEGER_NAMES, INTEGER_SYMBOL, MOVED, OVERRIDES,  # noqa: E402
                             SECTIONS, SYMBOL_DEFAULT, SYMBOL_LATEX, Override)
 from dlmf_sources import Formula, align, markdown_sections, numbered, semantic_lines  # noqa: E402
 from dlmf_tables import table_entries  # noqa: E402
@@ -49,6 +49,7 @@ class Entry:
     semantic: str = ""
     constraints: list[str] = field(default_factory=list)
     real: list[str] = field(default_factory=list)
+    defines: list[str] = field(default_factory=list)
     note: str = ""
     symbols: set[str] = field(default_factory=set)
     overridden: str = ""   # why the reader's reading was replaced or steered ("" = read as is)
@@ -177,7 +178,7 @@ def _entries(f, chapter, ov, opts, suffix, latexes, cons) -> list[Entry]:
         name=(ov.name if ov and ov.name else name_for(relations, kind) if relations else ""),
         latex=f.latex, printed=_join(relations) if relations else "", url=f"https://dlmf.nist.gov/{sec_num}.E{eq}",
         kind=kind, semantic=semantic_out, constraints=list(dict.fromkeys(constraints)), real=sorted(real),
-        note=note, symbols=symbols, overridden=(ov.reason if ov else ""), read_fully=read_fully)
+        defines=list(ov.defines) if ov else [], note=note, symbols=symbols, overridden=(ov.reason if ov else ""), read_fully=read_fully)
     if not (ov and ov.split):
         _symbols_of_constraints(base)
         return [base]
@@ -194,6 +195,85 @@ def _entries(f, chapter, ov, opts, suffix, latexes, cons) -> list[Entry]:
         e.note = "; ".join(x for x in (e.note, *pnotes) if x)
         _symbols_of_constraints(e)
         out.append(e)
+    return out
+
+
+def apply_convention(e: Entry, chapter: str, section: str) -> None:
+    """The chapter's notation section's domains (:data:`CONVENTIONS`) on an entry that uses the
+    symbol and does not bound it itself."""
+    conv = CONVENTIONS.get(chapter)
+    if conv is None or section in conv.except_sections:
+        return
+    used = _free_names([e.printed] + e.constraints)
+    for sym, bounds in conv.bounds.items():
+        own = any(re.match(rf"(?:Lt|Le|Gt|Ge)\((?:{sym}, |[^,]*, {sym}\))", c) for c in e.constraints)
+        if sym in used and not own:
+            e.constraints += [b for b in bounds if b not in e.constraints]
+    e.real = sorted(set(e.real) | {s for s in conv.real if s in used})
+
+
+#: The domains DLMF's prose states for ranges of formulas ("In (19.25.9)–(19.25.11) x, y, z
+#: are positive"), read section by section and written as constraints: ``dlmf_domains.json``
+#: (its ``kind``: ``prose`` stated, ``implied`` a parenthetical or inferred domain, ``note`` a
+#: remark — a Cauchy principal value's region is a note and not a domain to sample; ``default``
+#: the chapter's notation section, which :data:`CONVENTIONS` applies).
+DOMAINS = json.loads((HERE / "dlmf_domains.json").read_text(encoding="utf-8"))
+#: the reading's names for what the domains write in sympy's own
+_DOMAIN_NAMES = [(r"elliptic_k\(1 - k\*\*2\)", "EllipticKp(k)"), (r"elliptic_k\(k\*\*2\)", "EllipticK(k)"),
+                 (r"Symbol\('beta'\)", "beta_"), (r"Symbol\('gamma'\)", "gamma_"), (r"Symbol\('(\w+)'\)", r"\1"),
+                 (r"\bkp\b", "sqrt(1 - k**2)"), (r"\bcs\(", "JacobiCS(")]
+_ORDER = re.compile(r"(?:Lt|Le|Gt|Ge)\(")
+
+
+def _domain_constraints(c: str) -> list[str]:
+    """One domain constraint in the catalog's transcription ([] for one it has no reading of)."""
+    for pat, rep in _DOMAIN_NAMES:
+        c = re.sub(pat, rep, c)
+    m = re.fullmatch(r"Contains\((\w+), S\.(Integers|Naturals0)\)", c)
+    if m:
+        return [f"Eq({m.group(1)}, floor({m.group(1)}))"] + ([f"Ge({m.group(1)}, 0)"] if m.group(2) == "Naturals0" else [])
+    return [] if re.search(r"\bwp\(|Contains|\bS\.", c) else [c]
+
+
+def apply_prose_domains(e: Entry, number: str) -> None:
+    """The domains DLMF's prose states for this formula (:data:`DOMAINS`); a symbol an order
+    relation bounds (outside re, im, Abs) is real."""
+    used, before = _free_names([e.printed] + e.constraints), _free_names(e.constraints)
+    for d in DOMAINS:
+        if number not in d["formulas"] or d["kind"] == "default" or (
+                d["kind"] == "note" and "principal value" in d["note"]):
+            continue
+        for c in (x for raw in d["constraints"] for x in _domain_constraints(raw)):
+            names = _free_names([c])
+            defined = _DEFINED_LHS.match(c)
+            if not names or not (defined.group(1) in used if defined else names <= used):
+                continue
+            if defined and defined.group(1) in before:
+                continue  # the entry says already how that symbol is obtained (defines or bounds it)
+            if c not in e.constraints:
+                e.constraints.append(c)
+            if _ORDER.match(c) and not re.search(r"\b(?:re|im|Abs|arg)\(", c):
+                e.real = sorted(set(e.real) | names)
+        e.real = sorted(set(e.real) | {r.split("*")[0] for r in d["real"]} & used)
+
+
+def _free_names(transcriptions: list[str]) -> set[str]:
+    """The symbols a point must give values to (a limit's or a sum's variable is bound)."""
+    import sympy as sp
+
+    out: set[str] = set()
+    for t in transcriptions:
+        if not t:
+            continue
+        names = names_in(t)
+        local = {n: sp.Function(n) for n in names[1]} | {n: sp.Symbol(n) for n in names[0]}
+        local |= {n: getattr(sp, n) for n in ("Limit", "Sum", "Product", "Integral", "Derivative", "Eq", "Lt", "Le",
+                                              "Gt", "Ge", "Ne", "Abs", "sqrt", "oo", "I", "pi")}
+        try:
+            read = sp.sympify(t, locals=local)
+            out |= {str(x) for r in (read if isinstance(read, (list, tuple)) else [read]) for x in r.free_symbols}
+        except (sp.SympifyError, TypeError, SyntaxError, AttributeError):
+            out |= set(names[0])
     return out
 
 
@@ -234,7 +314,7 @@ _CONSTANTS = {"pi", "I", "oo", "True", "False"}
 
 
 def _symbols_of_constraints(e: Entry) -> None:
-    e.symbols = set(names_in(" ".join(e.constraints + [e.printed]))[0])
+    e.symbols = set(names_in(" ".join(e.constraints + [e.printed]))[0]) | set(e.defines)
 
 
 _HEADS = {"Eq", "Ne", "Lt", "Le", "Gt", "Ge", "And", "Or", "Abs", "re", "im", "arg", "floor",
@@ -380,6 +460,8 @@ def build_chapter(chapter: str):
             missing.append(f.number)
             continue
         for e in build(f, chapter):
+            apply_convention(e, chapter, f.section)
+            apply_prose_domains(e, f.number)
             entries.append((f.section, e))
     if missing:
         raise SystemExit(f"formulas without semantic LaTeX and without an override: {missing}")
@@ -397,6 +479,7 @@ def build_chapter(chapter: str):
                 e.overridden = ov.reason
             add_where(e.constraints, [e.printed], CHAPTER_WHERE[chapter])
             _symbols_of_constraints(e)
+            apply_convention(e, chapter, sec)
             entries.append((sec, e))
     return entries, titles, fs
 
@@ -428,6 +511,8 @@ def write_catalog(section: str, title: str, entries: list[Entry]) -> str:
             out.append(f"constraints = {toml_list(e.constraints)}")
         if e.real:
             out.append(f"real = {toml_list(e.real)}")
+        if e.defines:
+            out.append(f"defines = {toml_list(e.defines)}")
         out.append(f"url = {toml_str(e.url)}")
         out.append(f"kind = {toml_str(e.kind)}")
         if e.note:

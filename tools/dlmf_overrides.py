@@ -31,6 +31,7 @@ class Override:
     constraints_only: tuple[str, ...] | None = None
     drop_constraints: tuple[str, ...] = ()
     real: tuple[str, ...] = ()
+    defines: tuple[str, ...] = ()  # symbols the entry introduces (a hypothesis, an implicit definition)
     kind: str = ""
     name: str = ""
     note: str = ""
@@ -94,8 +95,32 @@ CHAPTER_WHERE = {
     "22": {"K": "Eq(K, EllipticK(k))", "Kp": "Eq(Kp, EllipticKp(k))", "q": "Eq(q, EllipticNome(k))",
            "tau": "Eq(tau, I*EllipticKp(k)/EllipticK(k))"},
 }
+
+
+@dataclass(frozen=True)
+class Convention:
+    """What a chapter's notation section fixes for every formula (outside the sections it
+    names): bounds on a symbol, symbols that are real."""
+
+    reason: str
+    bounds: dict = field(default_factory=dict)   # symbol -> constraints
+    real: tuple[str, ...] = ()
+    except_sections: tuple[str, ...] = ()
+
+
+#: Per chapter: the domains its notation section (§19.1, §22.1) states once for all formulas.
+CONVENTIONS: dict[str, Convention] = {
+    "22": Convention(
+        reason="§22.1: the modulus k is in [0, 1] except in §§22.3(iv), 22.17 and 22.19; x, y are real",
+        bounds={"k": ("Gt(k, 0)", "Lt(k, 1)")}, real=("k", "x", "y"), except_sections=("22.17", "22.19")),
+}
 ZETA_Z = "Eq(zeta, pi*z/(2*K))"
 LETTERS_SCDN = "scdn"
+#: Neville's theta functions θ_s, θ_c, θ_d, θ_n of (z|τ) (DLMF §20.1), u = z/θ_3²(0|τ), in Jacobi's
+#: θ_j(·, q); θ_1'(0, q) = θ_2 θ_3 θ_4 (0, q) (DLMF 20.4.6)
+NEVILLE = {"s": "JacobiTheta3(0, q)**2*JacobiTheta1(u, q)/(JacobiTheta2(0, q)*JacobiTheta3(0, q)*JacobiTheta4(0, q))",
+           "c": "JacobiTheta2(u, q)/JacobiTheta2(0, q)", "d": "JacobiTheta3(u, q)/JacobiTheta3(0, q)",
+           "n": "JacobiTheta4(u, q)/JacobiTheta4(0, q)"}
 
 
 def _perms(letters: str, names: str) -> tuple[dict, ...]:
@@ -408,9 +433,13 @@ OVERRIDES.update({
                          note="a_m, c_m, t_m, h_m read as sequences Function(\"c\")(m), ..."),
     # --- 22
     "22.2.10": Override("p, q, r any three distinct letters of s, c, d, n (the prose)", expand=_perms(LETTERS_SCDN, "pqr")),
-    "22.2.11": Override("p, q any two distinct letters of s, c, d, n; on the right they stand for 1, 2, 3, 4 (the prose)",
-                        expand=_perms(LETTERS_SCDN, "pq"),
-                        note="the semantic LaTeX names Jacobi's theta functions of (z|tau) where the print shows Neville's theta_p, theta_q: read as the semantic LaTeX says"),
+    "22.2.11": Override("the theta functions of the right side are Neville's (the prose, §20.1), which LaCASt's semantic "
+                        "LaTeX reads as Jacobi's θ_1 … θ_4 of the same argument: written here from §20.1's definitions of "
+                        "θ_s, θ_c, θ_d, θ_n (u = z/θ_3²(0|τ)); p, q any two distinct letters of s, c, d, n",
+                        printed=tuple(f"Eq(Jacobi{a.upper()}{b.upper()}(z, k), ({NEVILLE[a]})/({NEVILLE[b]}))"
+                                      for a, b in ((x["p"], x["q"]) for x in _perms(LETTERS_SCDN, "pq"))),
+                        constraints=("Eq(tau, I*EllipticKp(k)/EllipticK(k))", "Eq(q, exp(I*pi*tau))",
+                                     "Eq(u, z/JacobiTheta3(0, q)**2)")),
     "22.6.22": Override("p, q, r any permutation of c, d, n (the prose)", expand=CDN3),
     "22.10.7": Override("the O-term is as k′ → 0, i.e. k → 1", options=O("k", "1")),
     "22.10.8": Override("the O-term is as k′ → 0, i.e. k → 1", options=O("k", "1")),
@@ -422,13 +451,73 @@ OVERRIDES.update({
         note="(const.) read as a constant C; a_n, b_n, c_n the sequences of 22.20.1"),
 })
 
+def _ode(x: str, rhs: str, at_rest: bool = True) -> tuple[str, ...]:
+    """A solution x(t) of x'' = rhs(x): the equation of motion with x substituted, and, for a
+    start at rest at t = 0, x'(0) = 0."""
+    out = (f"Eq(Derivative({x}, (t, 2)), {rhs.replace('X', f'({x})')})",)
+    return out + ((f"Eq(Subs(Derivative({x}, t), t, 0), 0)",) if at_rest else ())
+
+
+def _solutions_22_19() -> dict:
+    """§22.19's equations of motion (22.19.1, 22.19.4, 22.19.5) state the problem; each
+    solution the section prints (22.19.2, 22.19.3, 22.19.6-22.19.9) is checked by putting it
+    into its equation of motion, with the modulus and the initial conditions the prose gives."""
+    hypothesis = "the equation of motion whose solutions the next formulas are: a hypothesis, checked through them"
+    theta = "2*asin(sin(alpha/2)*JacobiSN(t + K, sin(alpha/2)))"
+    sala = "2*JacobiAM(t*sqrt(E/2), sqrt(2/E))"
+    # each case's range of η = βa²/2 (the prose's range of a): a drawn, or computed from an η drawn in
+    # its range (η ≥ 1 as 1/s, 0 < s ≤ 1)
+    drawn = ("Eq(eta, beta_*a**2/2)", "Gt(a, 0)")
+    from_eta = ("Eq(a, sqrt(2*eta/beta_))",)
+    quartic = {"22.19.6": ("a*JacobiCN(t*sqrt(1 + 2*eta), k)", "-X - beta_*X**3", "Eq(k, 1/sqrt(2 + 1/eta))", drawn, True),
+               "22.19.7": ("a*JacobiSN(t*sqrt(1 - eta), k)", "-X + beta_*X**3", "Eq(k, 1/sqrt(1/eta - 1))",
+                           drawn + ("Le(a, sqrt(1/beta_))",), False),
+               "22.19.8": ("a*JacobiDN(t*sqrt(eta), k)", "X - beta_*X**3", "Eq(k, 1/sqrt(2 - 1/eta))",
+                           ("Ge(eta, 1/2)", "Lt(eta, 1)") + from_eta, True),
+               "22.19.9": ("a*JacobiCN(t*sqrt(2*eta - 1), k)", "X - beta_*X**3", "Eq(k, 1/sqrt(2 - 1/eta))",
+                           ("Gt(s, 0)", "Le(s, 1)", "Eq(eta, 1/s)") + from_eta, True)}
+    names = {"22.19.1": "the pendulum's equation of motion", "22.19.4": "Newton's equation in one dimension",
+             "22.19.5": "the quartic potentials"}
+    motion = {"22.19.1": (("Eq(Derivative(Function('theta')(t), (t, 2)), -sin(Function('theta')(t)))",), "theta"),
+              "22.19.4": (("Eq(Derivative(Function('x')(t), (t, 2)), -Subs(Derivative(Function('V')(X), X), X, "
+                           "Function('x')(t)))",), "V"),
+              "22.19.5": (tuple(f"Eq(Function('V')(x), {a}x**2/2 {b} beta_*x**4/4)" for a in ("", "-") for b in "+-"), "V")}
+    out = {n: Override(hypothesis, printed=motion[n][0], defines=(motion[n][1],), name=name) for n, name in names.items()}
+    out["22.19.2"] = Override(
+        "the pendulum's bounded solution put into (22.19.1), released at rest from θ = α (the prose); K = K(sin(α/2))",
+        printed=_ode(theta, "-sin(X)") + (f"Eq(Subs({theta}, t, 0), alpha)",),
+        constraints=("Eq(K, EllipticK(sin(alpha/2)))", "Gt(alpha, 0)", "Lt(alpha, pi)"), real=("alpha", "t"))
+    out["22.19.3"] = Override(
+        "Sala's solution put into (22.19.1), θ(0) = 0 and θ'(0) = √(2E) (the prose), for energies E > 0 on either "
+        "side of the separatrix E = 2",
+        printed=_ode(sala, "-sin(X)", at_rest=False) + (f"Eq(Subs({sala}, t, 0), 0)",
+                                                          f"Eq(Subs(Derivative({sala}, t), t, 0), sqrt(2*E))"),
+        constraints=("Gt(E, 0)", "Ne(E, 2)"), real=("E", "t"))
+    for n, (x, rhs, modulus, bounds, at_rest) in quartic.items():
+        out[n] = Override(
+            "the quartic oscillator's solution put into (22.19.4) with its potential (22.19.5) and the modulus the prose "
+            "gives for the case; η = βa²/2, β > 0" + (", released at rest from x = a" if at_rest else ""),
+            printed=_ode(x, rhs, at_rest) + ((f"Eq(Subs({x}, t, 0), a)",) if at_rest else ()),
+            constraints=("Gt(beta_, 0)",) + bounds + (modulus,), real=("a", "beta_", "eta", "s", "t"))
+    return out
+
+
 SECTIONS.update({
     "22.2": {"where": {"zeta": ZETA_Z}},
     "22.11": {"where": {"zeta": ZETA_Z}},
 })
 OVERRIDES.update({
     "22.16.9": Override("ζ = πx/(2K) here (the prose)", constraints=("Eq(zeta, pi*x/(2*K))",)),
-    "22.19.2": Override("K is K(sin(α/2)) here, the modulus of the pendulum", constraints=("Eq(K, EllipticK(sin(alpha/2)))",)),
+    **_solutions_22_19(),
+    "22.18.1": Override("the ellipse whose arc length (22.18.2)-(22.18.3) give: a definition of the curve", defines=("y",)),
+    "22.18.3": Override("l(u), the arc length as a function of u, which this formula introduces",
+                        printed=("Eq(Function('l')(u), a*JacobiEpsilon(u, k))",), defines=("l",)),
+    "22.18.4": Override("l(r), the lemniscate's arc length as a function of r, which this formula introduces",
+                        printed=("Eq(Function('l')(r), JacobiArcCN(r, 1/sqrt(2))/sqrt(2))",), defines=("l",)),
+    "22.18.5": Override("the inverse of (22.18.4): r as a function of the arc length l = l(r), 0 < r < 1",
+                        constraints_only=("Gt(r, 0)", "Lt(r, 1)", "Eq(l, JacobiArcCN(r, 1/sqrt(2))/sqrt(2))"),
+                        real=("r",), kind="identity"),
+    "22.18.7": Override("the family of curves the addition theorem of (22.18.8) parametrizes: a definition", defines=("y",)),
 })
 
 #: How text.toml declares a symbol: complex by default, sampled in a box; indices are integers.
@@ -526,11 +615,16 @@ OVERRIDES.update({
     "22.8.25": Override("the expression takes one value for z_1 − z_2 = z_2 − z_3 = 2K/3 (22.8.24)", kind="notation"),
     "22.8.27": Override("z_1 − z_2 = z_2 − z_3 = z_3 − z_4 = K/2 (22.8.26)",
                         constraints=("Eq(z_2, z_1 - K/2)", "Eq(z_3, z_1 - K)", "Eq(z_4, z_1 - 3*K/2)")),
-    **{f"22.8.{n}": Override("a condition on z_1, ..., z_4 for the next formula", kind="definition") for n in (19, 22, 24, 26)},
+    **{f"22.8.{n}": Override("a condition on z_1, ..., z_4 for the next formula: a hypothesis that introduces the "
+                             "later z_j, nothing to check", defines=zs)
+       for n, zs in ((19, ("z_4",)), (22, ("z_4",)), (24, ("z_2", "z_3")), (26, ("z_2", "z_3", "z_4")))},
     "22.15.5": Override("the principal value for -1 ≤ x ≤ 1 (22.15(ii))", constraints=("Le(-1, x)", "Le(x, 1)"), real=("x", "k")),
     "22.15.6": Override("the principal value for -1 ≤ x ≤ 1 (22.15(ii))", constraints=("Le(-1, x)", "Le(x, 1)"), real=("x", "k")),
     "22.15.7": Override("the principal value for k′ ≤ x ≤ 1 (22.15(ii))", constraints=(f"Le({KP}, x)", "Le(x, 1)"), real=("x", "k")),
     **{f"22.15.{n}": Override("the general solution: m an integer", kind="definition", constraints=("Eq(m, floor(m))",)) for n in (8, 9, 10)},
+    **{f"22.14.{n}": Override("Arccos is many-valued (22.14(i)); its principal branch, which the transcription's acos is, "
+                              "is the continuous one where sn(x, k) > 0: 0 < x < 2K", constraints=("Gt(x, 0)", "Lt(x, 2*K)"))
+       for n in (2, 6)},
     "22.16.30": Override("ξ = x/θ_3²(0, q) (the prose)", constraints=("Eq(xi, x/JacobiTheta3(0, q)**2)",)),
 })
 
@@ -572,7 +666,8 @@ OVERRIDES.update({
 OVERRIDES.update({
     **{f"22.16.{n}": Override("x = F(φ, k) (22.16.10)", constraints=("Eq(x, EllipticF(phi, k))",)) for n in (11, 12, 13)},
     "22.16.10": Override("x = F(φ, k) defines φ = am(x, k) for 22.16.11-13", kind="definition"),
-    **{f"22.15.{n}": Override("ξ, η, ζ are defined by this formula (22.15(i))", kind="definition") for n in (1, 2, 3)},
+    **{f"22.15.{n}": Override("ξ, η, ζ are defined by this formula (22.15(i)): it introduces them, nothing to check",
+                             kind="definition", defines=(v,)) for n, v in ((1, "xi"), (2, "eta"), (3, "zeta"))},
     **{f"19.26.{n}": Override("μ (or ξ, η, ζ) is defined by this formula", kind="definition") for n in (2, 3, 5, 12)},
     "19.26.14": Override("p, q, ξ, η as 19.26.15 gives them", constraints=(
         "Eq(q, x + (y - x)**2/(p - x))", "Eq(xi, y**2/x)", "Eq(eta, p*q/x)", "Gt(x, 0)", "Gt(y, 0)")),

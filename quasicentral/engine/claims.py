@@ -14,6 +14,7 @@ from types import MappingProxyType
 from dataclasses import dataclass
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from quasicentral.engine.reasons import Code, Reason
 from quasicentral.engine.registry import Mode, as_list
@@ -135,7 +136,10 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
         if rel is sp.true:  # sympy decided it from the symbols' assumptions: it holds as printed
             decided_true = True
             continue
-        introduced = sorted((set(defines) & rel.free_symbols) if isinstance(rel, sp.Basic) else (), key=str)
+        # a symbol it introduces, or a function of that name (the θ(t) an equation of motion is about)
+        introduced = sorted(((set(defines) & rel.free_symbols)
+                             | {s for s in defines for f in rel.atoms(AppliedUndef) if f.func.__name__ == str(s)})
+                            if isinstance(rel, sp.Basic) else (), key=str)
         if introduced:
             raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(str(s) for s in introduced)))
         if isinstance(rel, sp.Eq) and _antiderivative(rel) is not None:

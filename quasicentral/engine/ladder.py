@@ -40,6 +40,7 @@ SCALE_TERMS = 64
 
 class PointClass(Enum):
     AGREE = "agree"
+    VANISHES = "vanishes"  # agrees: the difference falls with the working precision (an exact zero)
     DISAGREE = "disagree"
     UNSTABLE = "unstable"
 
@@ -169,7 +170,10 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
 
     Agreement: |p − d| ≤ 10^(−0.6·dps)·reference on every rung evaluated.  A true difference:
     resolved on no rung, and stable (within ``opts.stable_within``) from the first rung to the
-    last.  The relative difference reported is |p − d| / max(|p|, |d|), floored at
+    last.  A difference that shrinks with the working precision (by 10^(−0.8·Δdps) or more from
+    the first rung to the last) is the rounding of an exact zero and agrees: a function at its
+    zero, whose argument is itself rounded (cn(K, k) = 0), has no magnitude to be judged
+    against, but its value falls with every digit the ladder adds.  The relative difference reported is |p − d| / max(|p|, |d|), floored at
     ``opts.scale_floor`` of the median magnitude."""
     ladder = opts.ladder
     mags = sorted(abs(r[-1].magnitude) for _, r in rows)
@@ -181,11 +185,19 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
         rel = float(min(hi / (max(row[-1].magnitude, floor) or mpmath.mpf(1)), mpmath.mpf(1e300)))
         if all(ok):
             out.append((PointClass.AGREE, rel))
+        elif len(row) > 1 and _vanishes(lo, hi, ladder[-1] - ladder[0], opts):
+            out.append((PointClass.VANISHES, rel))
         elif len(row) > 1 and not any(ok) and abs(lo - hi) <= mpmath.mpf(opts.stable_within) * hi:
             out.append((PointClass.DISAGREE, rel))
         else:
             out.append((PointClass.UNSTABLE, rel))
     return out
+
+
+def _vanishes(lo, hi, gained_digits: int, opts: Options) -> bool:
+    """A difference ``lo`` on the first rung falling to ``hi`` on the last, ``gained_digits``
+    later, as rounding noise does around an exact zero (and no true difference can)."""
+    return lo > 0 and hi <= lo * tolerance(opts.vanishing_exponent, gained_digits)
 
 
 def _refuted_already(rows, opts) -> bool:
@@ -332,8 +344,9 @@ def _nonsmooth_integrand(e: sp.Basic) -> str:
 
 
 def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
-    disagree, unstable = [], 0
+    disagree, unstable, zeros = [], 0, 0
     for (kind, rel), (pt, row) in zip(classify(rows, opts), rows):
+        zeros += kind is PointClass.VANISHES
         if kind is PointClass.DISAGREE:
             disagree.append((rel, pt, row))
         elif kind is PointClass.UNSTABLE:
@@ -362,4 +375,5 @@ def _judge(rows, pts, claim: Claim, p, d, opts: Options) -> Verdict:
         return Verified(Method.NUMERIC, Reason.of(Code.HOLDS, n=n, of=len(pts), top=ladder[-1]), n, ladder)
     return Verified(Method.NUMERIC, Reason.of(Code.AGREES, n=n, of=len(pts),
                                               digits=math.floor(opts.agreement_exponent * ladder[0]),
-                                              confirmed=confirmed, top=ladder[-1], vacuous=vacuous), n, ladder)
+                                              confirmed=confirmed, top=ladder[-1], vacuous=vacuous,
+                                              zeros=zeros), n, ladder)

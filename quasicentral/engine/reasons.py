@@ -28,7 +28,7 @@ class Code(str, Enum):
     language."""
 
     # --- verified ----------------------------------------------------------------------------
-    AGREES = "agrees"  # n, of, digits, confirmed, top, vacuous
+    AGREES = "agrees"  # n, of, digits, confirmed, top, vacuous, zeros (points where the difference vanished with the precision)
     PROVED = "proved"  # numbers: the AGREES of the same points
     DECIDED_TRUE = "decided-true"  # sympy decides the printed relation true from the assumptions
     ROUNDS_TO = "rounds-to"  # value, printed, places: an exact value that rounds to the printed decimal

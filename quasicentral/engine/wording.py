@@ -71,13 +71,18 @@ def _points(f, s, lang) -> str:
 
 def _agrees_en(f, s) -> str:
     also = f"also at {f.top} digits" if f.confirmed == f.n == 1 else f"{f.confirmed} of them also at {f.top} digits"
-    return (f"agrees at {_points(f, s, 'en')} point{'' if f.n == 1 else 's'} to {f.digits}+ digits ({also})" + (" (both sides vanish at every point)" if f.vacuous else ""))
+    zeros = (f"; at {'all' if f.zeros == f.n else f.zeros} of them the difference falls with every digit added: "
+             f"an exact zero, rounded" if f.zeros else "")
+    return (f"agrees at {_points(f, s, 'en')} point{'' if f.n == 1 else 's'} to {f.digits}+ digits ({also}{zeros})"
+            + (" (both sides vanish at every point)" if f.vacuous else ""))
 
 
 def _agrees_cs(f, s) -> str:
     also = f"také na {f.top} číslic" if f.confirmed == f.n == 1 else f"{f.confirmed} z nich také na {f.top} číslic"
+    zeros = (f"; v {'každém z nich' if f.zeros == f.n else f'{f.zeros} z nich'} rozdíl klesá s každou přidanou "
+             f"číslicí: přesná nula, zaokrouhlená" if f.zeros else "")
     return (f"souhlasí v {_points(f, s, 'cs')} {'bodě' if f.n == 1 else 'bodech'} na {f.digits} a více platných číslic "
-            f"({also})" + (" (obě strany ve všech bodech vymizí)" if f.vacuous else ""))
+            f"({also}{zeros})" + (" (obě strany ve všech bodech vymizí)" if f.vacuous else ""))
 
 
 def _numbers_en(f, s) -> str:
