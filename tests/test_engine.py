@@ -852,3 +852,19 @@ def test_a_function_at_its_zero_with_a_rounded_argument_is_an_exact_zero():
     assert isinstance(zero, Verified) and zero.reason["zeros"] == zero.points
     tiny = numeric(Claim(sp.exp(-100) * (1 + k**2), sp.Integer(0), V), Domain(), "tiny", OPTS, TABLE)
     assert isinstance(tiny, Refuted), "exp(−100)(1 + k²) is no rounding noise: it does not fall with the precision"
+
+
+def test_an_o_term_is_judged_as_far_as_the_working_precision_reaches():
+    """sin z to z⁷ + O(z⁹) as z → 0: at z = 2^(−24) the remainder is 10^(−71) against sin z ≈
+    10^(−7), beyond 50 digits, and every point used to drop out (DLMF 22.10.1-22.10.3 were
+    undecided).  The passage is cut where the two precisions part; a wrong coefficient still
+    grows on what is left."""
+    from quasicentral.engine import asymptotic
+    from quasicentral.notation.symbols import Landau
+
+    z = sp.Symbol("zeta")
+    poly = sum((-1) ** n * z ** (2 * n + 1) / sp.factorial(2 * n + 1) for n in range(4))
+    ok = asymptotic._order(sp.Eq(sp.sin(z), poly + Landau(z**9, z, 0)), Domain(), "sin", TABLE)
+    assert isinstance(ok, Verified) and ok.reason["steps"] < len(asymptotic.STEP_EXPONENTS)
+    bad = asymptotic._order(sp.Eq(sp.sin(z), poly + z**7 / 1000 + Landau(z**9, z, 0)), Domain(), "sin", TABLE)
+    assert isinstance(bad, Refuted)

@@ -30,6 +30,8 @@ from quasicentral.notation.symbols import Landau, SymbolTable
 
 #: the steps 2^−e of the passage (e over these), towards x₀ or, as 2^e, towards ∞
 STEP_EXPONENTS = (4, 8, 12, 16, 20, 24)
+#: the fewest steps of the passage, from its start, on which both precisions must agree
+MIN_STEPS = 4
 #: the precisions of the two evaluations that must agree (digits)
 PASSAGE_DPS = (50, 90)
 #: the most the ratio |R|/G may grow over the last three steps and still count as bounded
@@ -123,18 +125,24 @@ def _order(rel: sp.Eq, domain: Domain, label: str, table: SymbolTable) -> Verdic
     seq = _passage(var, point, table, domain)
     others = (ratio.free_symbols | set().union(*[c.free_symbols for c in domain.constraints])) - {var}
     pts = _points(others - set(domain.definition_map(table)), domain, label, table)
-    held = 0
+    held, steps = 0, len(seq)
     for pt in pts:
         rows = _values(ratio, var, seq, pt)
         if rows is None or not all(mpmath.isfinite(v) for row in rows for v in row):
             continue
         low, high = rows
-        if any(abs(a - b) > mpmath.mpf(10) ** -8 * max(abs(b), 1) for a, b in zip(low, high)):
+        # the passage as far as the two precisions agree: nearer x₀ the remainder R is what is
+        # left of a cancellation (sn z minus its Maclaurin polynomial, z⁹ ≈ 10^(−65) at 2^(−24))
+        # and runs out of the working digits; fewer than MIN_STEPS steps decide nothing
+        agree = next((j for j, (a, b) in enumerate(zip(low, high))
+                      if abs(a - b) > mpmath.mpf(10) ** -8 * max(abs(b), 1)), len(high))
+        if agree < MIN_STEPS:
             continue  # the two precisions disagree: not a value to judge by
-        r = [abs(v) for v in high]
-        growth = [_rate(r[j], r[j + 1], seq[j], seq[j + 1], point) for j in range(len(r) - 1)]
+        r = [abs(v) for v in high[:agree]]
+        step = seq[:agree]
+        growth = [_rate(r[j], r[j + 1], step[j], step[j + 1], point) for j in range(len(r) - 1)]
         if all(g is not None and g > GROWTH_REFUTES for g in growth[-3:]) and r[-1] > GROWTH_ALLOWED * r[-4]:
-            params = {str(k): sp.sstr(v) for k, v in sorted({**pt, var: seq[-1]}.items(), key=lambda kv: str(kv[0]))}
+            params = {str(k): sp.sstr(v) for k, v in sorted({**pt, var: step[-1]}.items(), key=lambda kv: str(kv[0]))}
             w = Witness(parameters=params, printed=mpmath.nstr(r[-1], 4), corrected=mpmath.nstr(r[-4], 4), digits=4,
                         certified=False, quantity=Reason.of(Code.Q_ORDER_RATIO, variable=str(var), point=sp.sstr(point)),
                         working_digits=PASSAGE_DPS[-1])
@@ -142,10 +150,10 @@ def _order(rel: sp.Eq, domain: Domain, label: str, table: SymbolTable) -> Verdic
                                                      rate=round(float(min(growth[-3:])), 2)),
                            held + 1, PASSAGE_DPS, witness=w)
         if r[-1] <= GROWTH_ALLOWED * max(r[-4:-1]) + mpmath.mpf(10) ** -30:
-            held += 1
+            held, steps = held + 1, min(steps, agree)
     if held >= max(1, (len(pts) + 1) // 2):
         return Verified(Method.NUMERIC, Reason.of(Code.ORDER_HOLDS, n=held, variable=str(var), point=sp.sstr(point),
-                                                  steps=len(seq)), held, PASSAGE_DPS)
+                                                  steps=steps), held, PASSAGE_DPS)
     return Inconclusive(Method.NONE, Reason.of(Code.LIMIT_UNDECIDED, variable=str(var), point=sp.sstr(point)))
 
 

@@ -126,7 +126,12 @@ class _Evaluator:
         return Rung(pv, dv, diff, mag)
 
     def with_terms(self, r: Rung, pt: dict, dps: int) -> Rung:
-        """``r`` with the magnitude of each side's terms (where |p|, |d| alone do not agree)."""
+        """``r`` with the magnitude of each side's terms (where |p|, |d| alone do not agree).
+        Where each side is one term, that is |p| + |d|, known already: the sides are not
+        evaluated again (an R_{−a} by quadrature costs a second a point)."""
+        if len(terms_of(self.p)) == 1 and len(terms_of(self.d)) == 1:
+            with mpmath.workdps(dps):
+                return Rung(r.printed, r.derived, r.diff, r.magnitude, abs(r.printed) + abs(r.derived))
         if self._terms is None:
             self._terms = bridge.rung_function(_magnitude_of_terms(self.p) + _magnitude_of_terms(self.d), self.args)
         with mpmath.workdps(dps):

@@ -69,13 +69,26 @@ class Domain:
 
 
 def substitute_definitions(expr: sp.Basic, defs: dict[sp.Basic, sp.Expr], rounds: int = 6) -> sp.Basic:
-    """Apply the definitions until nothing changes (definitions may refer to each other)."""
+    """Apply the definitions until nothing changes (definitions may refer to each other).  A
+    derivative in a defined symbol (d/dξ θ₄(ξ, q), ξ = x/θ₃²(0, q)) is taken in that symbol
+    and then at its definition: its variable is bound, and is not replaced."""
+    if defs and expr.has(sp.Derivative):
+        expr = _bind_derivatives(expr, set(defs))
     for _ in range(rounds):
         new = expr.xreplace(defs) if defs else expr
         if new == expr:
             break
         expr = new
     return expr
+
+
+def _bind_derivatives(expr: sp.Basic, names: set) -> sp.Basic:
+    """Each derivative in a symbol of ``names`` as Subs(derivative in a dummy, dummy, symbol)."""
+    def bind(d):
+        bound = {v: sp.Dummy(str(v)) for v in d.variables if v in names}
+        return sp.Subs(d.xreplace(bound), tuple(bound.values()), tuple(bound))
+
+    return expr.replace(lambda a: isinstance(a, sp.Derivative) and any(v in names for v in a.variables), bind)
 
 
 def seed_for(label: str) -> int:
