@@ -3,7 +3,9 @@
 with the counts per chapter (DLMF labels verified, or an erratum recorded, against LaCASt's
 baseline on the same labels: ``tools/dlmf_compare.py``).
 
-    python3 benchmarks/bench_dlmf.py [--timeout S] [--jobs N]
+    python3 benchmarks/bench_dlmf.py [--timeout S] [--jobs N] [--save FILE]
+
+``--save`` keeps the cold run's ``verify --json`` (for ``python3 tools/dlmf_compare.py FILE``).
 
 Target (issue 27, 2 cores): cold ≤ 90 s wall, warm ≤ 0.5 s.  The numbers are printed, never
 asserted; compare them with benchmarks/RESULTS.md.
@@ -51,12 +53,15 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--timeout", type=float, default=10.0)
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--save", default="", help="write the cold run's JSON here")
     args = ap.parse_args()
     print(machine())
     with tempfile.TemporaryDirectory() as tmp:
         env = {**os.environ, "QUASICENTRAL_CACHE": str(Path(tmp) / "cache")}
         cold, report = verify(env, args.timeout, args.jobs)
         warm, _ = verify(env, args.timeout, args.jobs)
+    if args.save:
+        Path(args.save).write_text(json.dumps(report, indent=1, ensure_ascii=False), encoding="utf-8")
     print(f"cold: {cold:7.1f} s wall ({len(report['equations'])} entries, --timeout {args.timeout:g}, --jobs {args.jobs})")
     print(f"warm: {warm:7.2f} s wall")
     for text, (n, settled, statuses) in per_chapter(report).items():

@@ -868,3 +868,34 @@ def test_an_o_term_is_judged_as_far_as_the_working_precision_reaches():
     assert isinstance(ok, Verified) and ok.reason["steps"] < len(asymptotic.STEP_EXPONENTS)
     bad = asymptotic._order(sp.Eq(sp.sin(z), poly + z**7 / 1000 + Landau(z**9, z, 0)), Domain(), "sin", TABLE)
     assert isinstance(bad, Refuted)
+
+
+def test_an_equation_of_motion_of_a_declared_function_is_a_hypothesis_its_solution_is_checked(tmp_path):
+    """A newcomer's pendulum notes: θ declared a function of t, θ̈ = −(g/l) sin θ with
+    `defines = ["theta"]` was refuted with a certified witness (θ and θ̈ drawn independently);
+    it is notation, and the solution put into it (FORMAT's recipe) is checked — a wrong
+    solution is refuted."""
+    import quasicentral as qc
+
+    (tmp_path / "catalog").mkdir()
+    (tmp_path / "text.toml").write_text(
+        'id = "rec"\ntitle = "recipe"\nauthors = ["A. User"]\nlanguage = "en"\ncheck = "identity"\n\n'
+        '[symbols.t]\nlatex = "t"\ndimension = "T"\nrange = ["0", "5"]\n\n'
+        '[symbols.g]\nlatex = "g"\ndimension = "L/T^2"\nrange = ["9", "10"]\n\n'
+        '[symbols.l]\nlatex = "l"\ndimension = "L"\nrange = ["1/2", "2"]\n\n'
+        '[symbols.k]\nlatex = "k"\ndimension = "1"\nrange = ["1/10", "9/10"]\n\n'
+        '[symbols.omega0]\nlatex = "w"\ndimension = "1/T"\ndefinition = "sqrt(g/l)"\n\n'
+        '[functions.theta]\nlatex = "x"\ndimension = "1"\nvariable = "t"\n', encoding="utf-8")
+    theta = "2*asin(k*JacobiSN({w}*t + EllipticK(k), k))"
+    rows = ['section = "1"\ntitle = "pendulum"\n',
+            '[[equation]]\nid = "rec:1"\nnumber = "1"\nname = "eom"\nlatex = "x"\n'
+            'printed = "Eq(D(theta, 2), -(g/l)*sin(theta))"\ndefines = ["theta"]\n']
+    for n, w in ((2, "omega0"), (3, "2*omega0")):
+        th = theta.format(w=w)
+        rows.append(f'[[equation]]\nid = "rec:{n}"\nnumber = "{n}"\nname = "solution"\nlatex = "x"\n'
+                    f'printed = "Eq(Derivative({th}, (t, 2)), -(g/l)*sin({th}))"\n')
+    (tmp_path / "catalog" / "a.toml").write_text("\n".join(rows), encoding="utf-8")
+    results = qc.load_text(str(tmp_path)).verify(cache=False, jobs=1)
+    assert results["rec:1"].status.value == "notation"
+    assert results["rec:2"].status.value == "verified"
+    assert results["rec:3"].outcome.verdict.name == "refuted"

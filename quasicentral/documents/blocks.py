@@ -280,7 +280,8 @@ def witness_short(w, lang: str, point: bool = True) -> str:
         digits += 1
     # an identity's witness holds its two sides, not a printed and a correct value
     sides = getattr(q, "code", None) is Code.Q_SIDES or q == "the left and the right side"
-    vals = W["vs_sides" if sides else "vs"].format(p=f"${number(printed, lang, digits)}$",
+    ratio = getattr(q, "code", None) is Code.Q_ORDER_RATIO  # an O-term's ratio at two steps of its passage
+    vals = W["vs_ratio" if ratio else "vs_sides" if sides else "vs"].format(p=f"${number(printed, lang, digits)}$",
                                                    c=f"${number(corrected, lang, digits)}$")
     return (f"{W['at']} {pts}: " if pts else "") + vals
 

@@ -124,6 +124,11 @@ def claims_for(printed: list[sp.Basic], derivation, result) -> list[Claim]:
     return _solved_claims(printed, derived, unknowns or tuple(d.lhs for d in derived))
 
 
+def _name(s: sp.Basic) -> str:
+    """A symbol's name; a declared function's (θ for θ(t))."""
+    return s.func.__name__ if isinstance(s, AppliedUndef) else str(s)
+
+
 def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
     """The printed relations as they stand: each equation's two sides (a chain is a list of
     equations), each inequality as its lesser side at most its greater.  Derivatives sympy can
@@ -136,12 +141,13 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
         if rel is sp.true:  # sympy decided it from the symbols' assumptions: it holds as printed
             decided_true = True
             continue
-        # a symbol it introduces, or a function of that name (the θ(t) an equation of motion is about)
-        introduced = sorted(((set(defines) & rel.free_symbols)
-                             | {s for s in defines for f in rel.atoms(AppliedUndef) if f.func.__name__ == str(s)})
-                            if isinstance(rel, sp.Basic) else (), key=str)
+        # a symbol it introduces, or a function it introduces (the θ(t) an equation of motion is
+        # about: declared in text.toml, or written Function('theta')(t))
+        introduced = sorted(({_name(s) for s in defines if s in rel.free_symbols}
+                             | ({_name(s) for s in defines} & {f.func.__name__ for f in rel.atoms(AppliedUndef)}))
+                            if isinstance(rel, sp.Basic) else ())
         if introduced:
-            raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(str(s) for s in introduced)))
+            raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(introduced)))
         if isinstance(rel, sp.Eq) and _antiderivative(rel) is not None:
             out.append(_antiderivative(rel))
         elif isinstance(rel, sp.Eq):

@@ -206,8 +206,11 @@ def errata_table(doc: dict) -> str:
     rows = []
     for r in doc["errata"]:
         w = r["witness"]
-        wit = "" if not w else (f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}"
-                                + (" (certified)" if w["certified"] else ""))
+        ratio = bool(w) and str(w.get("quantity", "")).startswith("|lhs − rhs| / |O-term|")
+        wit = "" if not w else (
+            (f"|lhs − rhs|/|O-term| {_short_number(w['printed'])} at the last step, {_short_number(w['corrected'])} "
+             "three before" if ratio else f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}")
+            + (" (certified)" if w["certified"] else ""))
         rows.append([r["id"], ",".join(r["cause"]), r["status"], wit])
     out += "\n\nErrata\n" + _table(["id", "cause", "status", "witness"], rows)
     crow = [[r["id"], r["suspicion"][:50], r["status"]] for r in doc["cleared"]]

@@ -178,8 +178,9 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
     last.  A difference that shrinks with the working precision (by 10^(−0.8·Δdps) or more from
     the first rung to the last) is the rounding of an exact zero and agrees: a function at its
     zero, whose argument is itself rounded (cn(K, k) = 0), has no magnitude to be judged
-    against, but its value falls with every digit the ladder adds.  The relative difference reported is |p − d| / max(|p|, |d|), floored at
-    ``opts.scale_floor`` of the median magnitude."""
+    against, but its value falls with every digit the ladder adds.  The relative difference
+    reported is |p − d| / max(|p|, |d|), floored at ``opts.scale_floor`` of the median
+    magnitude."""
     ladder = opts.ladder
     mags = sorted(abs(r[-1].magnitude) for _, r in rows)
     floor = mags[len(mags) // 2] * mpmath.mpf(opts.scale_floor) if mags else mpmath.mpf(0)

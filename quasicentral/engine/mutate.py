@@ -328,12 +328,14 @@ def _run_entry(ws, eid: str, per_entry: int | None):
 
 def verified_entries(ws, selected: list) -> list[str]:
     """Entries whose printed form is expected to verify (not errata, not cleared suspects that
-    are errata), with a derivation."""
+    are errata), with a derivation; not an entry that introduces what it states (notation: a
+    mutant of a definition is another definition, nothing a checker can catch)."""
     for t in selected:
         t.validate()  # a mistake in a folder's data is named now (file and line), not in a worker
     ws.survey(selected)  # a folder's modules run in a child: never in this process
     return [e.id for t in selected for e in t.entries.values()
-            if (ws.has_derivation(e.id) or t.check == "identity") and e.id not in t.errata]
+            if (ws.has_derivation(e.id) or t.check == "identity") and e.id not in t.errata
+            and not (t.check == "identity" and e.defines)]
 
 
 def run(ws, selected: list, per_entry: int | None = None, ids: list[str] | None = None,

@@ -54,13 +54,15 @@ _SENTENCE = MappingProxyType({
            "no numeric witness (the printed relation is dimensionally inconsistent)",
            "the printed value is {p}, the correct one {c} ({q}{r}; {cert})", "; relative difference ",
            "at {at} the left side is {p}, the right side {c} ({r}{cert})",
-           "the left side is {p}, the right side {c} ({r}{cert})"),
+           "the left side is {p}, the right side {c} ({r}{cert})",
+           "at {at} {q} is {p} at the last step and {c} three steps before ({cert})"),
     "cs": ("v bodě {at} dává vytištěný tvar {p}, správný {c} ({q}{r}; {cert})",
            "certifikováno", "necertifikováno",
            "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)",
            "vytištěná hodnota je {p}, správná {c} ({q}{r}; {cert})", "; relativní rozdíl ",
            "v bodě {at} je levá strana {p}, pravá {c} ({r}{cert})",
-           "levá strana je {p}, pravá {c} ({r}{cert})"),
+           "levá strana je {p}, pravá {c} ({r}{cert})",
+           "v bodě {at} je {q} v posledním kroku {p} a o tři kroky dříve {c} ({cert})"),
 })
 
 
@@ -86,7 +88,8 @@ def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
     from quasicentral.engine.reasons import Code
 
     sides = getattr(w.quantity, "code", None) is Code.Q_SIDES  # an identity: its two sides, no "correct" one
-    template = words[6 if at else 7] if sides else words[0 if at else 4]
+    ratio = getattr(w.quantity, "code", None) is Code.Q_ORDER_RATIO  # one form's ratio at two steps
+    template = words[8] if ratio else words[6 if at else 7] if sides else words[0 if at else 4]
     if sides:
         r = r[2:] + "; " if r else ""  # "relative difference 1.9; certified"
     return template.format(at=at, q=render(w.quantity, lang), p=style.decimal(p),

@@ -166,10 +166,12 @@ def cached_problem(ws, eid: str, d: object) -> str | None:
             return f"it was built on text {tid!r}, which is not open"
     text = ws.text(eid.split(":", 1)[0])
     allowed = ((Status.ERRATUM,) if eid in text.errata else (Status.CLEARED,) if eid in text.cleared
-               else (Status.VERIFIED,))
+               else (Status.VERIFIED, Status.NOTATION))
     if o.status not in allowed + (Status.UNEXPECTED,):
         return (f"cached status {o.status.value!r} contradicts the errata registry "
                 f"(expected {' or '.join(a.value for a in allowed)})")
+    if o.status is Status.NOTATION and not (isinstance(o.verdict, Inconclusive) and o.verdict.reason.code in NOTATION_CODES):
+        return f"cached status 'notation' with a {o.verdict.name} verdict"
     if o.status in (Status.VERIFIED, Status.CLEARED) and not isinstance(o.verdict, Verified):
         return f"cached status {o.status.value!r} with a {o.verdict.name} verdict"
     if o.status is Status.ERRATUM and not (isinstance(o.verdict, Refuted)

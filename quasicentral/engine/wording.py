@@ -357,10 +357,8 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "en": lambda f, s: f"stays bounded as {s.expr(f.variable)} → {s.expr(f.point)}, printed infinite",
         "cs": lambda f, s: f"zůstává omezená pro {s.expr(f.variable)} → {s.expr(f.point)}, vytištěno nekonečno"},
     Code.Q_ORDER_RATIO: {
-        "en": lambda f, s: f"|lhs − rhs| / |O-term| at the last and an earlier step of {s.expr(f.variable)} → "
-                           f"{s.expr(f.point)}",
-        "cs": lambda f, s: f"|levá − pravá| / |člen O| v posledním a dřívějším kroku {s.expr(f.variable)} → "
-                           f"{s.expr(f.point)}"},
+        "en": lambda f, s: f"|lhs − rhs| / |O-term| as {s.expr(f.variable)} → {s.expr(f.point)}",
+        "cs": lambda f, s: f"|levá − pravá| / |člen O| pro {s.expr(f.variable)} → {s.expr(f.point)}"},
     Code.Q_SIDES: {"en": lambda f, s: "the left and the right side", "cs": lambda f, s: "levá a pravá strana"},
     Code.Q_LESSER_GREATER: {"en": lambda f, s: "the side printed lesser and the side printed greater",
                             "cs": lambda f, s: "strana vytištěná jako menší a strana vytištěná jako větší"},
