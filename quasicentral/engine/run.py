@@ -190,8 +190,8 @@ def cache_keys(ws, entries: list[catalog.Entry], opts: Options) -> dict[str, str
 
 def _out_of_time(record: dict) -> bool:
     """Whether an outcome's record is the timeout's (the check or its corrected form ran out of
-    time), which the cache key — the timeout bounds the work, it is not part of the key — must
-    not keep."""
+    time).  The cache key leaves the timeout out (it bounds the work); such a record keeps the
+    timeout it ran under and is read back only by a run with no longer a timeout."""
     o = record.get("outcome", {})
     return any((v or {}).get("reason", {}).get("code") == Code.OUT_OF_TIME.value
                for v in (o.get("verdict"), o.get("corrected_verdict")))
@@ -201,7 +201,7 @@ def cache_file(key: str) -> Path:
     return cache_dir() / f"{key}.json"
 
 
-def _read_cached(ws, entries, key_of, warn) -> dict[str, dict]:
+def _read_cached(ws, entries, key_of, warn, timeout: float) -> dict[str, dict]:
     results = {}
     for e in entries:
         data = read_private(cache_dir(), cache_file(key_of[e.id]).name)
@@ -216,6 +216,9 @@ def _read_cached(ws, entries, key_of, warn) -> dict[str, dict]:
         if problem:
             warn(f"cache: {e.id}: {problem}; discarded, recomputed")
             continue
+        if isinstance(d, dict) and _out_of_time(d) and not (isinstance(d.get("timeout"), (int, float))
+                                                             and d["timeout"] >= timeout):
+            continue  # it ran out of a shorter time than this run allows: a longer one may settle it
         results[e.id] = d
     return results
 
@@ -245,7 +248,7 @@ def run(ws, entries: list[catalog.Entry], opts: Options, use_cache: bool = True,
         t.validate()  # a mistake in a folder's data is named now (file and line), not in a worker
     ws.survey(selected, opts.timeout)  # a folder's modules run in a child: never in this process
     key_of = cache_keys(ws, entries, opts)
-    results = _read_cached(ws, entries, key_of, warn) if use_cache else {}
+    results = _read_cached(ws, entries, key_of, warn, opts.timeout) if use_cache else {}
     todo = [e.id for e in entries if e.id not in results]
     cached = len(results)
     notify(progress, cached, len(entries), "cache" if cached else "", cached, "entries")
@@ -255,9 +258,9 @@ def run(ws, entries: list[catalog.Entry], opts: Options, use_cache: bool = True,
         try:
             cache_dir().mkdir(parents=True, exist_ok=True)
             for eid in todo:
-                if _out_of_time(results[eid]):
-                    continue  # a verdict the timeout decided is not kept: a longer one may settle it
-                write_text(cache_file(key_of[eid]), json.dumps(results[eid], sort_keys=True))
+                # a verdict the timeout decided is kept with that timeout: a longer one recomputes it
+                kept = {**results[eid], "timeout": opts.timeout} if _out_of_time(results[eid]) else results[eid]
+                write_text(cache_file(key_of[eid]), json.dumps(kept, sort_keys=True))
         except OSError:
             pass  # a read-only cache is not an error
     for e in entries:
