@@ -76,8 +76,9 @@ def _replay_key(args) -> str | None:
     folders = fingerprint.text_folders(args.texts)
     if folders is None:
         return None  # the full reader says what is wrong with the names
+    # the timeout too: a verdict that ran out of time is read back only under no longer a timeout
     opts = {"source": args.source, "ids": args.ids, "dps": args.dps, "json": args.json,
-            "junit": args.junit is not None}
+            "junit": args.junit is not None, "timeout": args.timeout}
     return replay.key("verify", opts, folders)
 
 
