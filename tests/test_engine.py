@@ -865,6 +865,28 @@ def test_a_function_at_its_zero_with_a_rounded_argument_is_an_exact_zero():
     assert isinstance(tiny, Refuted), "exp(−100)(1 + k²) is no rounding noise: it does not fall with the precision"
 
 
+def test_a_difference_that_fell_once_must_fall_again_to_count_as_zero():
+    """A true difference of 10^(−29) whose 30-digit value was noise of 10^(−5) has fallen 24
+    orders by 60 digits too; at 90 digits it stays 10^(−29), where rounding noise would fall
+    again: only the latter is an exact zero."""
+    from quasicentral.engine import ladder
+
+    def row(lo, hi):
+        return [ladder.Rung(0, 0, mpmath.mpf(lo), mpmath.mpf(1)), ladder.Rung(0, 0, mpmath.mpf(hi), mpmath.mpf(1))]
+
+    class Beyond:
+        def __init__(self, diff):
+            self.diff = mpmath.mpf(diff)
+
+        def rung(self, pt, dps):
+            assert dps == 90
+            return ladder.Rung(0, 0, self.diff, mpmath.mpf(1))
+
+    assert not ladder._confirm_fall(Beyond("1e-29"), {}, row("1e-5", "1e-29"), OPTS).falls
+    assert ladder._confirm_fall(Beyond("1e-59"), {}, row("1e-5", "1e-29"), OPTS).falls
+    assert not ladder._confirm_fall(Beyond("0"), {}, row("1e-5", "1e-20"), OPTS).falls, "fell too little on the ladder"
+
+
 def test_an_o_term_is_judged_as_far_as_the_working_precision_reaches():
     """sin z to z⁷ + O(z⁹) as z → 0: at z = 2^(−24) the remainder is 10^(−71) against sin z ≈
     10^(−7), beyond 50 digits, and every point used to drop out (DLMF 22.10.1-22.10.3 were

@@ -270,7 +270,8 @@ def witness_short(w, lang: str, point: bool = True) -> str:
     if w is None:
         return ""
     q = getattr(w, "quantity", None) if not isinstance(w, dict) else w.get("quantity")
-    if q == "dimensions" or getattr(q, "code", None) is Code.Q_DIMENSIONS:
+    code = _wget(w, "quantity_code") if isinstance(w, dict) else getattr(getattr(q, "code", None), "value", "")
+    if code == Code.Q_DIMENSIONS.value:
         return W["dims_bad"] + "."
     params = (_wget(w, "parameters") or {}) if point else {}
     pts = ", ".join(f"${_param_name(k)} = {number(v, lang)}$" for k, v in sorted(params.items()))
@@ -279,8 +280,8 @@ def witness_short(w, lang: str, point: bool = True) -> str:
     while digits < 15 and number(printed, lang, digits) == number(corrected, lang, digits):
         digits += 1
     # an identity's witness holds its two sides, not a printed and a correct value
-    sides = getattr(q, "code", None) is Code.Q_SIDES or q == "the left and the right side"
-    ratio = getattr(q, "code", None) is Code.Q_ORDER_RATIO  # an O-term's ratio at two steps of its passage
+    sides = code == Code.Q_SIDES.value
+    ratio = code == Code.Q_ORDER_RATIO.value  # an O-term's ratio at two steps of its passage
     vals = W["vs_ratio" if ratio else "vs_sides" if sides else "vs"].format(p=f"${number(printed, lang, digits)}$",
                                                    c=f"${number(corrected, lang, digits)}$")
     return (f"{W['at']} {pts}: " if pts else "") + vals

@@ -10,6 +10,7 @@ import xml.etree.ElementTree as ET
 
 from quasicentral.engine.catalog import Entry
 from quasicentral.engine.notes import render_note
+from quasicentral.engine.reasons import Code
 from quasicentral.engine.verdict import Outcome, Status
 
 
@@ -84,7 +85,8 @@ def _dimensional_witness(o: Outcome) -> dict:
     """A dimensional refutation has no numeric point; its witness is the dimension mismatch."""
     return {"parameters": {}, "printed": o.verdict.dimensions, "corrected": "consistent",
             "digits": 0, "certified": True, "printed_certified": True, "corrected_certified": True,
-            "working_digits": 0, "quantity": "dimensions", "relative_difference": ""}
+            "working_digits": 0, "quantity": "dimensions", "relative_difference": "",
+            "quantity_code": Code.Q_DIMENSIONS.value}
 
 
 def catalog_document(entries: list[Entry], coverage: dict) -> dict:
@@ -206,7 +208,7 @@ def errata_table(doc: dict) -> str:
     rows = []
     for r in doc["errata"]:
         w = r["witness"]
-        ratio = bool(w) and str(w.get("quantity", "")).startswith("|lhs − rhs| / |O-term|")
+        ratio = bool(w) and w.get("quantity_code") == Code.Q_ORDER_RATIO.value
         wit = "" if not w else (
             (f"|lhs − rhs|/|O-term| {_short_number(w['printed'])} at the last step, {_short_number(w['corrected'])} "
              "three before" if ratio else f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}")

@@ -13,7 +13,7 @@ of an ill-conditioned evaluation.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
 from functools import lru_cache
 
@@ -54,6 +54,8 @@ class Rung:
     diff: object
     magnitude: object  # max(|p|, |d|, |scale|)
     terms: object = None  # the terms' magnitude, computed only where the values do not agree
+    # the difference kept falling on a rung beyond the ladder too (checked only where it fell on it)
+    falls: bool = False
 
 
 def _jet_ranges(syms) -> dict:
@@ -111,6 +113,7 @@ class _Evaluator:
         self.fs = bridge.rung_function(scale, args) if scale is not None else None
         self.d_args = tuple(sorted(d.free_symbols, key=str))
         self._terms = None
+        self._one_term = len(terms_of(p)) == 1 and len(terms_of(d)) == 1  # each side a single term
 
     def rung(self, pt: dict, dps: int) -> Rung:
         with mpmath.workdps(dps):
@@ -129,7 +132,7 @@ class _Evaluator:
         """``r`` with the magnitude of each side's terms (where |p|, |d| alone do not agree).
         Where each side is one term, that is |p| + |d|, known already: the sides are not
         evaluated again (an R_{−a} by quadrature costs a second a point)."""
-        if len(terms_of(self.p)) == 1 and len(terms_of(self.d)) == 1:
+        if self._one_term:
             with mpmath.workdps(dps):
                 return Rung(r.printed, r.derived, r.diff, r.magnitude, abs(r.printed) + abs(r.derived))
         if self._terms is None:
@@ -176,9 +179,9 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
     Agreement: |p − d| ≤ 10^(−0.6·dps)·reference on every rung evaluated.  A true difference:
     resolved on no rung, and stable (within ``opts.stable_within``) from the first rung to the
     last.  A difference that shrinks with the working precision (by 10^(−0.8·Δdps) or more from
-    the first rung to the last) is the rounding of an exact zero and agrees: a function at its
-    zero, whose argument is itself rounded (cn(K, k) = 0), has no magnitude to be judged
-    against, but its value falls with every digit the ladder adds.  The relative difference
+    the first rung to the last, and again as much on one rung beyond) is the rounding of an
+    exact zero and agrees: a function at its zero, whose argument is itself rounded (cn(K, k) =
+    0), has no magnitude to be judged against, but its value falls with every digit added.  The relative difference
     reported is |p − d| / max(|p|, |d|), floored at ``opts.scale_floor`` of the median
     magnitude."""
     ladder = opts.ladder
@@ -191,7 +194,7 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
         rel = float(min(hi / (max(row[-1].magnitude, floor) or mpmath.mpf(1)), mpmath.mpf(1e300)))
         if all(ok):
             out.append((PointClass.AGREE, rel))
-        elif len(row) > 1 and _vanishes(lo, hi, ladder[-1] - ladder[0], opts):
+        elif len(row) > 1 and row[-1].falls:
             out.append((PointClass.VANISHES, rel))
         elif len(row) > 1 and not any(ok) and abs(lo - hi) <= mpmath.mpf(opts.stable_within) * hi:
             out.append((PointClass.DISAGREE, rel))
@@ -200,10 +203,23 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
     return out
 
 
-def _vanishes(lo, hi, gained_digits: int, opts: Options) -> bool:
-    """A difference ``lo`` on the first rung falling to ``hi`` on the last, ``gained_digits``
-    later, as rounding noise does around an exact zero (and no true difference can)."""
+def _falls(lo, hi, gained_digits: int, opts: Options) -> bool:
+    """A difference ``lo`` falling to ``hi``, ``gained_digits`` later, as rounding noise does."""
     return lo > 0 and hi <= lo * tolerance(opts.vanishing_exponent, gained_digits)
+
+
+def _confirm_fall(ev: _Evaluator, pt: dict, row: list, opts: Options) -> Rung:
+    """The top rung, marked ``falls`` where the difference that fell over the ladder falls again
+    as far on one more rung as far beyond: a true difference of 10^(−29), whose 30-digit value
+    was noise of 10^(−5), has fallen to itself at 60 digits and stays there at 90."""
+    top = row[-1]
+    gained = opts.ladder[-1] - opts.ladder[0]
+    if len(row) < 2 or not _falls(row[0].diff, top.diff, gained, opts):
+        return top
+    if top.diff == 0:  # exactly zero on the top rung: no true difference comes out so
+        return replace(top, falls=True)
+    beyond = ev.rung(pt, opts.ladder[-1] + gained)
+    return replace(top, falls=_falls(top.diff, beyond.diff, gained, opts))
 
 
 def _refuted_already(rows, opts) -> bool:
@@ -325,6 +341,7 @@ def _evaluate(ev: _Evaluator, pts: list, opts: Options):
                 row += [ev.rung(pt, dps) for dps in opts.ladder[1:]]
             if not all(agrees(r.diff, r.magnitude, dps, opts) for dps, r in zip(opts.ladder, row)):
                 row = [ev.with_terms(r, pt, dps) for dps, r in zip(opts.ladder, row)]
+                row[-1] = _confirm_fall(ev, pt, row, opts)
         except EVALUATION_ERRORS as exc:
             first_error = first_error or f"{type(exc).__name__}: {exc}"[:160]
             continue

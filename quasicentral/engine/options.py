@@ -27,8 +27,9 @@ class Options:
     certify_evaluations: int = 10_000
     agreement_exponent: float = 0.6  # agreement: |p − d| ≤ 10^(−0.6·dps)·scale on each rung
     stable_within: float = 1e-3  # a difference is real when it changes by less than this between rungs
-    # a difference that falls by 10^(−0.8·Δdps) or more from the first rung to the last is the
-    # rounding of an exact zero (cn(K, k) = 0: the argument K itself is rounded), not a value
+    # a difference that falls by 10^(−0.8·Δdps) or more from the first rung to the last, and as
+    # much again on a rung as far beyond, is the rounding of an exact zero (cn(K, k) = 0: the
+    # argument K itself is rounded), not a value
     vanishing_exponent: float = 0.8
     scale_floor: float = 1e-6  # the scale is at least this fraction of the median magnitude
     early_stop_after: int = 6  # points evaluated before a refutation may stop the run early ...

@@ -67,7 +67,9 @@ class Witness:
         return {"parameters": dict(self.parameters), "printed": self.printed, "corrected": self.corrected,
                 "digits": self.digits, "certified": self.certified, "printed_certified": self.printed_certified,
                 "corrected_certified": self.corrected_certified, "working_digits": self.working_digits,
-                "quantity": self.quantity_text, "relative_difference": self.relative_difference}
+                "quantity": self.quantity_text, "relative_difference": self.relative_difference,
+                # what the values are, typed: for views of the JSON that word it per language
+                "quantity_code": self.quantity.code.value if self.quantity is not None else ""}
 
     def to_record(self) -> dict:
         """The witness for the verdict cache (its quantity typed)."""
@@ -79,6 +81,7 @@ class Witness:
     def from_record(d: dict) -> "Witness":
         d = dict(d)
         q = d.pop("quantity", None)
+        d.pop("quantity_code", None)  # the quantity's own code, said again for the JSON
         return Witness(quantity=Reason.from_json(q) if q else None, **d)
 
 
