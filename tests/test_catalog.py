@@ -81,3 +81,19 @@ def test_malformed_file_is_refused(tmp_path):
 def test_uses_are_what_the_derivation_uses(eid):
     """A derivation's declared ``uses`` are exactly the ids it asks ``derived()`` for."""
     assert WS.used(eid) == set(shipped.derivation(eid).declared_uses)
+
+
+def test_an_integral_over_a_bound_variable_has_the_dimension_of_its_integrand_times_the_variable():
+    """∫₀^∞ v f(v) dv (f a density in s/m) has no free symbol, and sympy calls it a number:
+    it was dimensionless, so a correct ⟨v⟩ = ∫ v f dv was "inconsistent" and a wrong
+    ∫ v f dv = 1 "consistent" (a newcomer's Maxwell distribution)."""
+    from quasicentral.notation.units import parse_dim
+
+    v, w = sp.symbols("v w", nonnegative=True)
+    f = sp.Function("f")(v)
+    speed = parse_dim("m/s")
+    dims = {v: speed, w: speed, f: 1 / speed}
+    mean = sp.Integral(v * f, (v, 0, sp.oo))
+    assert check_relation(sp.Eq(mean, w), dims).status.value == "consistent"
+    assert check_relation(sp.Eq(mean, 1), dims).status.value == "inconsistent"
+    assert check_relation(sp.Eq(sp.Integral(f, (v, 0, sp.oo)), 1), dims).status.value == "consistent"

@@ -313,7 +313,7 @@ def _param_name(name: str) -> str:
 
 def detail_text(reason, lang: str) -> str:
     """The checker's reason for a verdict in the document's language (the wording table)."""
-    return text(render(reason, lang)) if reason is not None else ""
+    return text(render(reason, lang), lang=lang) if reason is not None else ""
 
 
 _DIM_NAMES = MappingProxyType({DIM_L: r"\mathsf{L}", DIM_T: r"\mathsf{T}", DIM_M: r"\mathsf{M}", DIM_THETA: r"\Theta",

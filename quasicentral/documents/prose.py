@@ -138,14 +138,16 @@ WORDS = MappingProxyType({
             r"relation, on the re-derived solution where the relation is checked on one, to zero.  "
             r"Every symbolic proof is cross-checked numerically at the same points as below; where "
             r"the numbers disagree with a proof, the numbers win.  \emph{Numerically}: both sides "
-            r"are evaluated at points drawn from the physical domain of the text (positive lengths, "
-            r"masses and times, the amplitudes the text allows) at 30 and then at 60 significant "
+            r"are evaluated at points drawn from the ranges the text declares for its symbols "
+            r"at 30 and then at 60 significant "
             r"digits; a relation is verified when they agree to at least 18 digits at every point.  "
             r"\emph{By ball arithmetic}: at the witness of an error, the two values are computed as "
             r"intervals that are guaranteed to contain them; the error is \emph{certified} when the "
             r"intervals do not overlap.  \emph{Dimensions}: every relation is also checked for "
-            r"dimensional consistency; a relation whose sides have different dimensions is refuted "
-            r"whatever the numbers say.  The table lists how each verdict was reached."),
+            r"dimensional consistency; a relation whose sides have different dimensions is refuted, "
+            r"unless the numbers verify it at every point: then the dimension check itself is the "
+            r"suspect, and the relation is left undecided.  The table lists how each verdict was "
+            r"reached."),
         "evidence_table": "Evidence for each equation",
         "col_eq": "Eq.", "col_status": "Status", "col_method": "Method", "col_evidence": "Evidence",
         "no_derivation": "No derivation is registered for this entry yet.",
@@ -283,13 +285,14 @@ WORDS = MappingProxyType({
             r"\emph{Symbolicky}: sympy zjednoduší rozdíl obou stran vytištěného vztahu na nulu (kde se "
             r"vztah ověřuje na odvozeném řešení, po dosazení tohoto řešení).  Každý symbolický důkaz "
             r"je navíc zkontrolován numericky ve stejných bodech jako níže; kdyby čísla důkazu "
-            r"odporovala, platí čísla.  \emph{Numericky}: obě strany vyčíslíme v~bodech fyzikálního "
-            r"oboru textu (kladné délky, hmotnosti a~časy, výchylky, které text připouští) na 30 "
+            r"odporovala, platí čísla.  \emph{Numericky}: obě strany vyčíslíme v~bodech z~rozsahů, "
+            r"které text svým symbolům určuje, na 30 "
             r"a~potom na 60 platných číslic; vztah je ověřen, shodují-li se v~každém bodě alespoň na "
             r"18 číslic.  \emph{Intervalovou aritmetikou}: v~protipříkladu chyby spočteme obě hodnoty "
             r"jako intervaly, které je zaručeně obsahují; chyba je \emph{potvrzena}, když se intervaly "
             r"nepřekrývají.  \emph{Rozměry}: u~každého vztahu kontrolujeme i~rozměry; vztah, jehož "
-            r"strany mají různé rozměry, je vyvrácen bez ohledu na čísla.  Tabulka uvádí, jak byl "
+            r"strany mají různé rozměry, je vyvrácen, ledaže jej čísla ověří v~každém bodě: tehdy je "
+            r"podezřelá sama kontrola rozměrů a~vztah zůstává nerozhodnut.  Tabulka uvádí, jak byl "
             r"získán každý verdikt."),
         "evidence_table": "Doklady pro jednotlivé rovnice",
         "col_eq": "Rovnice", "col_status": "Stav", "col_method": "Metoda", "col_evidence": "Doklad",
@@ -309,7 +312,7 @@ WORDS = MappingProxyType({
         "vs": "vytištěno {p}, správně {c}",
         "vs_sides": "levá strana {p}, pravá strana {c}",
         "vs_ratio": "|levá − pravá|/|člen O| {p} v posledním kroku, {c} o tři kroky dříve",
-        "corrected_form": "Opravený tvar je",
+        "corrected_form": "Opravený tvar:",
         "table_eq": "Rovnice", "table_printed": "Vytištěno", "table_corrected": "Opraveno",
         "table_witness": "Protipříklad", "table_cert": "Potvrz.",
         "none_found": "Žádné.",
@@ -379,6 +382,8 @@ class TextProse:
     #: "printed" means for this text (its source: a transcription, an OCR …), per language
     abstract: dict[str, str] = field(default_factory=dict)
     source: dict[str, str] = field(default_factory=dict)
+    #: the language the text is written in (its catalog's names and section titles)
+    language: str = "en"
 
     def section_title(self, section: str, lang: str) -> str | None:
         got = self.sections.get(section)
@@ -422,26 +427,29 @@ def _lang_table(raw, where: str) -> dict[str, str]:
     return {k: " ".join(v.split()) if "\n" not in v.strip() else v.strip() for k, v in raw.items()}
 
 
-def generic_prose(text_id: str, title: str | None = None) -> TextProse:
+def generic_prose(text_id: str, title: str | None = None, language: str = "en", title_en: str = "") -> TextProse:
     """The prose of a text that brings no report.toml: its title (or its id) — plain text from
-    text.toml, escaped — and generic words."""
+    text.toml, escaped and typeset in the text's language (Czech v, z are words), the English
+    report's from ``title_en`` where the text gives one — and generic words."""
     from quasicentral.documents.prosetex import text
 
-    name = text(title or text_id)
-    return TextProse(text_id, {lang: name for lang in LANGS}, dict(GENERIC["intro"]),
-                     dict(GENERIC["figures_intro"]), {})
+    name = text(title or text_id, lang=language)
+    english = text(title_en, lang="en") if title_en else name
+    return TextProse(text_id, {lang: english if lang == "en" else name for lang in LANGS}, dict(GENERIC["intro"]),
+                     dict(GENERIC["figures_intro"]), {}, language=language)
 
 
-def load_prose(root: Path, text_id: str | None = None, title: str | None = None) -> TextProse:
+def load_prose(root: Path, text_id: str | None = None, title: str | None = None, language: str = "en",
+               title_en: str = "") -> TextProse:
     """The prose of the text whose folder is ``root``: ``root / "report.toml"`` when it exists,
     else :func:`generic_prose`.  ``text_id`` defaults to the folder's name."""
     text_id = text_id or Path(root).name
     path = Path(root) / REPORT_FILE
     if not path.is_file():
-        return generic_prose(text_id, title)
+        return generic_prose(text_id, title, language, title_en)
     data = tomllib.loads(path.read_text(encoding="utf-8"))
     where = f"{text_id}/{REPORT_FILE}"
-    base = generic_prose(text_id, title)
+    base = generic_prose(text_id, title, language, title_en)
     sections = {str(k): (_lang_table(v.get("title"), f"{where}: sections.{k}.title"),
                          _lang_table(v.get("intro"), f"{where}: sections.{k}.intro"))
                 for k, v in data.get("sections", {}).items()}
@@ -462,15 +470,16 @@ def load_prose(root: Path, text_id: str | None = None, title: str | None = None)
         _lang_table(data.get("figures_intro"), f"{where}: figures_intro") or base.figures_intro,
         sections, figures, entries, str(data.get("meta", {}).get("author", "")),
         dict(data.get("notation", {}).get("symbols", {})), dict(data.get("notation", {}).get("functions", {})),
-        _lang_table(data.get("abstract"), f"{where}: abstract"), _lang_table(data.get("source"), f"{where}: source"))
+        _lang_table(data.get("abstract"), f"{where}: abstract"), _lang_table(data.get("source"), f"{where}: source"),
+        language)
 
 
 REPORT_FILE = "report.toml"
 
 
 @lru_cache(maxsize=None)
-def _prose_cached(root: str, text_id: str, title: str | None) -> TextProse:
-    return load_prose(Path(root), text_id, title)
+def _prose_cached(root: str, text_id: str, title: str | None, language: str = "en", title_en: str = "") -> TextProse:
+    return load_prose(Path(root), text_id, title, language, title_en)
 
 
 def prose_of(text) -> TextProse:
@@ -478,4 +487,5 @@ def prose_of(text) -> TextProse:
     or a folder."""
     if isinstance(text, Path):
         return _prose_cached(str(text), text.name, None)
-    return _prose_cached(str(text.root), text.id, getattr(text, "title", None))
+    return _prose_cached(str(text.root), text.id, getattr(text, "title", None), getattr(text, "language", "en"),
+                         getattr(text, "title_en", ""))

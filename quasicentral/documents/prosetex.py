@@ -295,7 +295,8 @@ def _lone_variable(tokens: list[tuple[bool, str]], k: int, words: frozenset = fr
     nxt = tokens[k + 1] if k + 1 < len(tokens) else (False, " ")
     after = tokens[k + 2] if k + 2 < len(tokens) else (False, " ")
     then = tokens[k + 3] if k + 3 < len(tokens) else (False, "")
-    if tex == "d" or (tex in words and (tex in "aI" or (nxt[1] == " " and not after[0] and after[1][:1].isalpha()))):
+    # a one-letter word before a word or a number ("v 20 bodech", "6 z 6 bodů")
+    if tex == "d" or (tex in words and (tex in "aI" or (nxt[1] == " " and not after[0] and after[1][:1].isalnum()))):
         return False
     opening = k == 0 or (prev[1] == " " and k > 1 and tokens[k - 2][1] in ".:" and not tokens[k - 2][0])
     if tex == "A" and opening and nxt[1] == " " and _word_at(tokens, k + 2) not in _NOT_AFTER_ARTICLE \

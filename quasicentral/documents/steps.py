@@ -170,7 +170,7 @@ def entry_heading(st: Step, prose: TextProse, lang: str) -> str:
     own = prose.entry(st.entry.id).name.get(lang)
     if own:
         name = own
-    elif lang == "en":
+    elif lang == "en":  # a catalog's names are English (FORMAT.md; report.toml names them per language)
         name = text(clean_prose(st.entry.name))
     else:
         name = ""

@@ -30,7 +30,7 @@ import sympy as sp
 from sympy.core.cache import clear_cache
 
 from quasicentral.engine import asymptotic, rounding
-from quasicentral.engine.claims import (CannotCompare, Claim, HoldsAsPrinted, claims_for, decided,  # noqa: F401
+from quasicentral.engine.claims import (CannotCompare, Claim, HoldsAsPrinted, claims_for, decided, put_model,  # noqa: F401
                                         doit_derivatives)
 from quasicentral.engine.dimensions import check_relation
 from quasicentral.engine.ladder import numeric
@@ -40,7 +40,7 @@ from quasicentral.engine.reasons import Code, Reason
 from quasicentral.engine.registry import Derivation, Mode
 from quasicentral.engine.verdict import Inconclusive, Method, Refuted, Verdict, Verified, combine
 from quasicentral.notation.domain import substitute_definitions
-from quasicentral.notation.symbols import SymbolTable
+from quasicentral.notation.symbols import Approx, SymbolTable
 from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
 __all__ = ["Claim", "Options", "check", "claims_for", "numeric"]
@@ -54,8 +54,10 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
           table: SymbolTable, result=None, failed: str | None = None) -> Verdict:
     """The verdict on ``printed`` against ``derivation``'s ``result`` (see the module
     docstring); ``failed`` is the error of a derivation that could not be computed."""
-    # a text that declares no dimension at all (mathematics: a formula collection) has none to check
-    findings = tuple(c for c in (check_relation(rel, dims) for rel in printed if not rounding.relation_is_rounding(rel))
+    # a text that declares no dimension at all (mathematics: a formula collection) has none to check;
+    # a formula with printed decimals (θ ≈ 1.22 λ/D) has the dimensions of its equation
+    findings = tuple(c for c in (check_relation(rel.equation() if isinstance(rel, Approx) else rel, dims)
+                                 for rel in printed if not rounding.relation_is_rounding(rel))
                      if c.inconsistent or c.undetermined) if dims else ()
     inconsistent = tuple(c for c in findings if c.inconsistent)
     if inconsistent and not opts.numbers_after_dimensions:
@@ -84,7 +86,7 @@ def check(printed: list[sp.Basic], dims: dict, derivation: Derivation, label: st
             return unsettled(Reason.of(Code.NO_NUMERIC_FORM, function="O"))
         # an expansion of the derived model: the printed relation with the model put in
         model = dict(result)
-        printed = [doit_derivatives(doit_derivatives(rel).subs(model)) for rel in printed]
+        printed = [doit_derivatives(put_model(doit_derivatives(rel), model)) for rel in printed]
     if asymptotic.passage_relation(printed):
         try:
             return replace(asymptotic.check(printed, derivation.domain, label, opts, table), dimensions=findings)

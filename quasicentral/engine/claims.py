@@ -18,6 +18,7 @@ from sympy.core.function import AppliedUndef
 
 from quasicentral.engine.reasons import Code, Reason
 from quasicentral.engine.registry import Mode, as_list
+from quasicentral.notation.symbols import Approx
 
 
 @dataclass(frozen=True)
@@ -51,6 +52,18 @@ class HoldsAsPrinted(Exception):
     assumptions: 0 ≤ erf x for x > 0): a proof, nothing left to compare."""
 
 
+def put_model(e: sp.Basic, model: dict) -> sp.Basic:
+    """``e`` on a derived model: ``{x: …}`` substituted, and a function given whole,
+    ``{u.func: Lambda((x, t), …)}``, put in at each of its applications (u(0, t), f(v) inside
+    ∫ … dv) — by ``replace``: sympy's ``subs`` of a function class fails inside an integral
+    (TypeError: 'property' object is not iterable)."""
+    whole = {k: v for k, v in model.items() if isinstance(k, sp.FunctionClass)}
+    rest = {k: v for k, v in model.items() if k not in whole}
+    for head, body in whole.items():
+        e = e.replace(head, body) if isinstance(body, sp.Lambda) else e.subs(head, body)
+    return e.subs(rest) if rest else e
+
+
 def doit_derivatives(e):
     """Derivatives carried out, and a derivative at a point (``Subs``) too — its terms then
     show, so that a value that is exactly 0 is judged against them."""
@@ -61,23 +74,35 @@ def doit_derivatives(e):
     return e
 
 
-def solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
-    """The value of ``unknown`` that ``rel`` states (None where it states none, or several)."""
+def solutions_for(rel: sp.Basic, unknown: sp.Basic) -> list[sp.Expr]:
+    """The values of ``unknown`` that ``rel`` states: one where it enters linearly, else
+    sympy's solutions on the symbols' assumptions (v² = 2gh: ±√(2gh), or √(2gh) alone for a
+    positive v); none where it states none (not an equation, the unknown absent, or sympy
+    finds no solution)."""
     if not isinstance(rel, sp.Eq):
-        return None
+        return []
     if rel.lhs == unknown:
-        return rel.rhs
+        return [rel.rhs]
     if rel.rhs == unknown:
-        return rel.lhs
-    dummy = sp.Dummy("u")
+        return [rel.lhs]
+    dummy = sp.Dummy("u", **unknown.assumptions0) if isinstance(unknown, sp.Symbol) else sp.Dummy("u")
     expr = (rel.lhs - rel.rhs).xreplace({unknown: dummy})
     if dummy not in expr.free_symbols:
-        return None
+        return []
     coeff = sp.diff(expr, dummy)
     if dummy in coeff.free_symbols:
-        sols = sp.solve(expr, dummy)
-        return sols[0] if len(sols) == 1 else None
-    return sp.cancel(-expr.xreplace({dummy: 0}) / coeff) if coeff.is_polynomial() else -expr.xreplace({dummy: 0}) / coeff
+        try:
+            sols = sp.solve(expr, dummy)
+        except NotImplementedError:  # an equation sympy cannot solve states no value it can name
+            return []
+        return [v for v in sols if isinstance(v, sp.Expr) and dummy not in v.free_symbols]
+    return [sp.cancel(-expr.xreplace({dummy: 0}) / coeff) if coeff.is_polynomial() else -expr.xreplace({dummy: 0}) / coeff]
+
+
+def solve_for(rel: sp.Basic, unknown: sp.Basic) -> sp.Expr | None:
+    """The value of ``unknown`` that ``rel`` states (None where it states none, or several)."""
+    sols = solutions_for(rel, unknown)
+    return sols[0] if len(sols) == 1 else None
 
 
 def decided(rel: sp.Basic) -> sp.Basic:
@@ -124,6 +149,14 @@ def claims_for(printed: list[sp.Basic], derivation, result) -> list[Claim]:
     return _solved_claims(printed, derived, unknowns or tuple(d.lhs for d in derived))
 
 
+def window_claim(rel: Approx, put) -> Claim:
+    """A formula with printed decimals (θ ≈ 1.22 λ/D): |x − value| at most what the decimals'
+    rounding allows (:meth:`~quasicentral.notation.symbols.Approx.window`), ``put`` applied
+    to both (the derived model, derivatives carried out)."""
+    distance, allowed = rel.window()
+    return Claim(put(distance), put(allowed), Reason(Code.Q_ROUNDING_WINDOW), at_most=True)
+
+
 def _name(s: sp.Basic) -> str:
     """A symbol's name; a declared function's (θ for θ(t))."""
     return s.func.__name__ if isinstance(s, AppliedUndef) else str(s)
@@ -148,7 +181,9 @@ def identity_claims(printed: list, defines: tuple = ()) -> list[Claim]:
                             if isinstance(rel, sp.Basic) else ())
         if introduced:
             raise CannotCompare(Reason.of(Code.DEFINES, symbols=tuple(introduced)))
-        if isinstance(rel, sp.Eq) and _antiderivative(rel) is not None:
+        if isinstance(rel, Approx) and rel.is_formula:
+            out.append(window_claim(rel, doit_derivatives))
+        elif isinstance(rel, sp.Eq) and _antiderivative(rel) is not None:
             out.append(_antiderivative(rel))
         elif isinstance(rel, sp.Eq):
             out.append(Claim(doit_derivatives(rel.lhs), doit_derivatives(rel.rhs), Reason(Code.Q_SIDES)))
@@ -193,12 +228,23 @@ def _condition_claims(printed: list, result, unknowns=None) -> list[Claim]:
     point, and no witness, violates the premise."""
     if not all(isinstance(r, sp.Eq) for r in printed):
         raise CannotCompare(Reason(Code.CONDITION_NOT_EQUATION))
-    cond = {r.lhs: r.rhs for r in printed}
     q = doit_derivatives(result)
     quantity = Reason.of(Code.Q_UNDER_CONDITION, quantity=sp.sstr(q))
+    # a substitution holds the premise only where it eliminates what the condition names: a
+    # symbol on either side (A = 0, R₀Ω = v₀), or the unknown solved for (½mv_p² = k_BT: v_p), or
+    # a pattern that leaves none of its symbols (ω² = k/m with ω only squared in q); put in as a
+    # pattern that leaves v_p and m free, points drawn for them would break the premise (a
+    # certified false refutation)
+    cond, named = {}, set()
+    for r in printed:
+        key, value = _eliminated_by(r, unknowns)
+        cond[key] = value
+        named |= key.free_symbols - value.free_symbols
     substituted = q.subs(cond)
-    if substituted != q or len(printed) != 1:
+    if substituted != q and not (substituted.free_symbols & named):
         return [Claim(substituted, sp.Integer(0), quantity, sp.Abs(q))]
+    if len(printed) != 1:
+        raise CannotCompare(Reason.of(Code.CONDITIONS_NOT_ELIMINATING, symbols=tuple(sorted(map(str, named)))))
     f = doit_derivatives(printed[0].lhs - printed[0].rhs)
     # any symbol of the condition will do: solved for it, the points satisfy the premise; the
     # derivation's unknown, else one the quantity shares, samples where the text means
@@ -209,17 +255,33 @@ def _condition_claims(printed: list, result, unknowns=None) -> list[Claim]:
     return [Claim(q, sp.Integer(0), quantity, None, implicit=(candidates[0], f))]
 
 
+def _eliminated_by(rel: sp.Eq, unknowns) -> tuple[sp.Basic, sp.Expr]:
+    """What a printed condition puts in: a symbol (or function) alone on either side and absent
+    from the other; else an unknown it states one value of; else its left side as a pattern."""
+    for side, other in ((rel.lhs, rel.rhs), (rel.rhs, rel.lhs)):
+        if isinstance(side, (sp.Symbol, AppliedUndef)) and not other.has(side):
+            return side, other
+    for u in unknowns or ():
+        if rel.has(u):
+            value = solve_for(rel, u)
+            if value is not None:
+                return u, value
+    return rel.lhs, rel.rhs
+
+
 def _model_claims(printed: list, model: dict) -> list[Claim]:
     out = []
     for rel in printed:
-        if isinstance(rel, sp.Eq):
-            lhs = doit_derivatives(doit_derivatives(rel.lhs).subs(model))
-            rhs = doit_derivatives(doit_derivatives(rel.rhs).subs(model))
+        if isinstance(rel, Approx) and rel.is_formula:
+            out.append(window_claim(rel, lambda e: doit_derivatives(put_model(doit_derivatives(e), model))))
+        elif isinstance(rel, sp.Eq):
+            lhs = doit_derivatives(put_model(doit_derivatives(rel.lhs), model))
+            rhs = doit_derivatives(put_model(doit_derivatives(rel.rhs), model))
             out.append(Claim(lhs - rhs, sp.Integer(0), Reason(Code.Q_RESIDUAL), sp.Abs(lhs) + sp.Abs(rhs)))
         elif isinstance(rel, sp.Basic) and rel in (sp.true, sp.false):
             _truth(rel)
         else:
-            out.append(Claim(doit_derivatives(rel.subs(model)), sp.Integer(0), Reason(Code.Q_EXPRESSION)))
+            out.append(Claim(doit_derivatives(put_model(rel, model)), sp.Integer(0), Reason(Code.Q_EXPRESSION)))
     return out
 
 
@@ -228,17 +290,33 @@ def _solved_claims(printed: list, derived: list, unknowns) -> list[Claim]:
     for p, d, unk in zip(printed, derived, unknowns):
         unk = doit_derivatives(unk)
         _truth(p)
-        pv, dv = solve_for(p, unk), solve_for(d, unk)
-        if dv is None:
-            raise CannotCompare(Reason.of(Code.CANNOT_SOLVE, unknown=sp.sstr(unk)))
-        if pv is not None:
-            out.append(Claim(pv, dv, Reason.of(Code.Q_UNKNOWN, unknown=sp.sstr(unk))))
-        elif isinstance(p, sp.Eq):
-            # not solvable for the unknown (absent, or several branches): the printed relation
-            # must still hold wherever the derived one does
-            lhs, rhs = p.lhs.xreplace({unk: dv}), p.rhs.xreplace({unk: dv})
-            out.append(Claim(lhs - rhs, sp.Integer(0), Reason.of(Code.Q_PRINTED_RESIDUAL, unknown=sp.sstr(unk)),
-                             sp.Abs(lhs) + sp.Abs(rhs)))
-        else:
+        if isinstance(p, Approx) and p.is_formula:
+            dvs = solutions_for(d, unk)
+            if len(dvs) != 1:
+                raise CannotCompare(Reason.of(Code.CANNOT_SOLVE, unknown=sp.sstr(unk)))
+            out.append(window_claim(p, lambda e, dv=dvs[0]: doit_derivatives(e.xreplace({unk: dv}))))
+            continue
+        pv, dvs = solve_for(p, unk), solutions_for(d, unk)
+        if not isinstance(p, sp.Eq) and pv is None:
             raise CannotCompare(Reason.of(Code.NOT_EQUATION_FOR, unknown=sp.sstr(unk)))
+        if len(dvs) == 1 and pv is not None:
+            out.append(Claim(pv, dvs[0], Reason.of(Code.Q_UNKNOWN, unknown=sp.sstr(unk))))
+        elif pv is not None:
+            # the derived relation of several branches (v² = 2gh) of which the printed value
+            # is one (v = √(2gh)), or of none sympy can name (a transcendental one): it must
+            # hold at the value printed
+            out.append(_residual(d, unk, pv, Code.Q_DERIVED_RESIDUAL))
+        elif dvs:
+            # the printed relation not solvable for the unknown (absent, or several branches):
+            # it must hold on every branch the derived one states
+            out += [_residual(p, unk, dv, Code.Q_PRINTED_RESIDUAL) for dv in dvs]
+        else:
+            raise CannotCompare(Reason.of(Code.CANNOT_SOLVE, unknown=sp.sstr(unk)))
     return out
+
+
+def _residual(rel: sp.Eq, unknown: sp.Basic, value: sp.Expr, code: Code) -> Claim:
+    """lhs − rhs of ``rel`` at ``unknown`` = ``value``, which must vanish (judged against the
+    size of its two sides)."""
+    lhs, rhs = rel.lhs.xreplace({unknown: value}), rel.rhs.xreplace({unknown: value})
+    return Claim(lhs - rhs, sp.Integer(0), Reason.of(code, unknown=sp.sstr(unknown)), sp.Abs(lhs) + sp.Abs(rhs))

@@ -57,7 +57,9 @@ def dimension(e: sp.Basic, dims: dict, log_ok: bool = False) -> sp.Expr:  # noqa
     a derivative, d/dt ln X = Ẋ/X is free of X's unit)."""
     if e in dims:
         return dims[e]
-    if e.is_number:
+    # a number, but not an integral or a sum over a bound variable (∫₀^∞ v f(v) dv has no free
+    # symbol and the dimension of a speed)
+    if e.is_number and not e.atoms(sp.Symbol, sp.core.function.AppliedUndef):
         return DIMENSIONLESS
     if isinstance(e, sp.Symbol):
         raise DimensionUnknown(Reason.of(Code.DIM_UNDECLARED_SYMBOL, symbol=str(e)))

@@ -169,7 +169,7 @@ def _table_detail(r: dict) -> str:
 def verify_table(doc: dict) -> str:
     rows = [[r["id"], r["status"], r["verdict"], r["method"], _shortened(_table_detail(r))] for r in doc["equations"]]
     s = doc["summary"]
-    tail = (f"\n{s['entries']} entries: " + ", ".join(f"{v} {k}" for k, v in s["status"].items())
+    tail = (f"\n{s['entries']} entr{'ies' if s['entries'] != 1 else 'y'}: " + ", ".join(f"{v} {k}" for k, v in s["status"].items())
             + (f" ({s['causes']} root cause{'s' if s['causes'] != 1 else ''})" if s.get("causes") else "")
             + ("" if s["ok"] else f"\nunexpected: {', '.join(s['unexpected'])}"))
     return _table(["id", "status", "verdict", "method", "detail"], rows) + tail
@@ -209,9 +209,11 @@ def errata_table(doc: dict) -> str:
     for r in doc["errata"]:
         w = r["witness"]
         ratio = bool(w) and w.get("quantity_code") == Code.Q_ORDER_RATIO.value
+        bound = bool(w) and w.get("quantity_code") in (Code.Q_LESSER_GREATER.value, Code.Q_ROUNDING_WINDOW.value)
         wit = "" if not w else (
             (f"|lhs − rhs|/|O-term| {_short_number(w['printed'])} at the last step, {_short_number(w['corrected'])} "
-             "three before" if ratio else f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}")
+             "three before" if ratio else f"{_short_number(w['printed'])} > {_short_number(w['corrected'])}" if bound
+             else f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}")
             + (" (certified)" if w["certified"] else ""))
         rows.append([r["id"], ",".join(r["cause"]), r["status"], wit])
     out += "\n\nErrata\n" + _table(["id", "cause", "status", "witness"], rows)

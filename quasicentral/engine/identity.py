@@ -15,6 +15,7 @@ instead).
 from __future__ import annotations
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from quasicentral.engine.catalog import Entry
 from quasicentral.engine.claims import INEQUALITIES
@@ -56,6 +57,12 @@ def definitions_in(constraints) -> tuple[dict, list]:
 def _defines(c, defs) -> tuple | None:
     if not isinstance(c, sp.Eq) or c.has(sp.floor):
         return None
+    for side, other in ((c.lhs, c.rhs), (c.rhs, c.lhs)):
+        # a declared function given along its variables (x(t) = sin ωt, u(x, t) = …): defined
+        # there, derivatives in its variables included
+        if isinstance(side, AppliedUndef) and side not in defs and not other.has(side.func) \
+                and all(isinstance(a, sp.Symbol) for a in side.args) and len(set(side.args)) == len(side.args):
+            return side, other
     for side, other in ((c.lhs, c.rhs), (c.rhs, c.lhs)):
         free = side.free_symbols
         if len(free) != 1:

@@ -27,7 +27,11 @@ def parameters_text(w, lang: str = "en", digits: int = PARAMETER_DIGITS) -> dict
     out = {}
     for k, v in w.parameters.items():
         val = sp.sympify(v, rational=True) if not isinstance(v, sp.Basic) else v
-        short = sp.sstr(sp.N(val, digits))
+        # rounded once, from the exact value: sympy's N(x, 4) rounds a binary value of about four
+        # digits again, and said U = 5.222 of 5476191/1048576 = 5.22250…
+        with mpmath.workdps(digits + 30):
+            exact = mpmath.mpf(int(val.p)) / int(val.q) if val.is_Rational else mpmath.mpf(sp.N(val, digits + 30))
+            short = mpmath.nstr(exact, digits, strip_zeros=True) if exact != 0 else "0"
         if "." in short and "e" not in short:  # 1.5000000 → 1.5: the zeros say nothing
             short = short.rstrip("0").rstrip(".")
         out[k] = v if val.is_Rational and val.q == 1 else style.decimal(short)
@@ -55,14 +59,16 @@ _SENTENCE = MappingProxyType({
            "the printed value is {p}, the correct one {c} ({q}{r}; {cert})", "; relative difference ",
            "at {at} the left side is {p}, the right side {c} ({r}{cert})",
            "the left side is {p}, the right side {c} ({r}{cert})",
-           "at {at} {q} is {p} at the last step and {c} three steps before ({cert})"),
+           "at {at} {q} is {p} at the last step and {c} three steps before ({cert})",
+           "at {at}, {q}: {p} and {c} ({cert})", "{q}: {p} and {c} ({cert})"),
     "cs": ("v bodě {at} dává vytištěný tvar {p}, správný {c} ({q}{r}; {cert})",
            "certifikováno", "necertifikováno",
            "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)",
            "vytištěná hodnota je {p}, správná {c} ({q}{r}; {cert})", "; relativní rozdíl ",
            "v bodě {at} je levá strana {p}, pravá {c} ({r}{cert})",
            "levá strana je {p}, pravá {c} ({r}{cert})",
-           "v bodě {at} je {q} v posledním kroku {p} a o tři kroky dříve {c} ({cert})"),
+           "v bodě {at} je {q} v posledním kroku {p} a o tři kroky dříve {c} ({cert})",
+           "v bodě {at}: {q}: {p} a {c} ({cert})", "{q}: {p} a {c} ({cert})"),
 })
 
 
@@ -89,7 +95,10 @@ def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
 
     sides = getattr(w.quantity, "code", None) is Code.Q_SIDES  # an identity: its two sides, no "correct" one
     ratio = getattr(w.quantity, "code", None) is Code.Q_ORDER_RATIO  # one form's ratio at two steps
-    template = words[8] if ratio else words[6 if at else 7] if sides else words[0 if at else 4]
+    # a bound: the two values compared, neither printed nor correct, no relative difference
+    bound = getattr(w.quantity, "code", None) in (Code.Q_LESSER_GREATER, Code.Q_ROUNDING_WINDOW)
+    template = words[8] if ratio else words[9 if at else 10] if bound else \
+        words[6 if at else 7] if sides else words[0 if at else 4]
     if sides:
         r = r[2:] + "; " if r else ""  # "relative difference 1.9; certified"
     return template.format(at=at, q=render(w.quantity, lang), p=style.decimal(p),

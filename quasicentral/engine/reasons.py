@@ -72,6 +72,7 @@ class Code(str, Enum):
     ONE_POINT_DOMAIN = "one-point-domain"  # symbol
     CONDITION_UNSOLVED = "condition-unsolved"  # unknown, count
     CONDITION_UNKNOWN = "condition-unknown"  # symbols: an implicit condition in no symbol
+    CONDITIONS_NOT_ELIMINATING = "conditions-not-eliminating"  # symbols: several conditions that leave what they name
     ASYMPTOTIC_WITHOUT_LIMIT = "asymptotic-without-limit"
     NOTATION_ONLY = "notation-only"
     LIMIT_UNDECIDED = "limit-undecided"  # variable, point
@@ -105,6 +106,8 @@ class Code(str, Enum):
     Q_EXPRESSION = "q-expression"  # a bare printed expression on the derived model
     Q_UNDER_CONDITION = "q-under-condition"  # quantity
     Q_PRINTED_RESIDUAL = "q-printed-residual"  # unknown
+    Q_DERIVED_RESIDUAL = "q-derived-residual"  # unknown
+    Q_ROUNDING_WINDOW = "q-rounding-window"  # |x − a formula with printed decimals|, and what they allow
     Q_UNKNOWN = "q-unknown"  # unknown: the value of the unknown, printed and derived
     Q_DIMENSIONS = "q-dimensions"
     Q_ANTIDERIVATIVE = "q-antiderivative"  # variable: d/dx of the printed antiderivative, and the integrand

@@ -36,7 +36,9 @@ SHOWN_BEYOND = 4
 
 
 def relation_is_rounding(rel) -> bool:
-    return isinstance(rel, Approx)
+    """A printed rounding of one number (a formula with printed decimals is compared as a
+    relation: :meth:`~quasicentral.notation.symbols.Approx.window`)."""
+    return isinstance(rel, Approx) and not rel.is_formula
 
 
 def _decimal(x: Fraction, places: int) -> str:

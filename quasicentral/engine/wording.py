@@ -100,6 +100,12 @@ def _numbers_cs(f, s) -> str:
     return f" (numericky {word.get(n, n)})" if isinstance(n, str) else f" ({f.sub('numbers')})"
 
 
+def _places_cs(n) -> str:
+    """n decimal places in Czech: 1 desetinné místo, 2–4 desetinná místa, 5 and more desetinných míst."""
+    n = int(n)
+    return f"{n} desetinné místo" if n == 1 else f"{n} desetinná místa" if 2 <= n <= 4 else f"{n} desetinných míst"
+
+
 _VERDICT_CS = MappingProxyType({"verified": "ověřen", "refuted": "vyvrácen", "inconclusive": "nerozhodnut"})
 
 Template = Callable[[_Fields, object], str]
@@ -117,7 +123,7 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "en": lambda f, s: (f"the exact value {s.decimal(f.value)} rounds to the printed {s.decimal(f.printed)} "
                             f"({f.places} decimal places)"),
         "cs": lambda f, s: (f"přesná hodnota {s.decimal(f.value)} se zaokrouhlí na vytištěné {s.decimal(f.printed)} "
-                            f"({f.places} desetinných míst)")},
+                            f"({_places_cs(f.places)})")},
     Code.HOLDS: {
         "en": lambda f, s: f"holds at {_points(f, s, 'en')} points ({f.top} digits)",
         "cs": lambda f, s: f"platí v {_points(f, s, 'cs')} bodech ({f.top} číslic)"},
@@ -166,7 +172,7 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "en": lambda f, s: (f"the exact value {s.decimal(f.exact)} does not round to the printed "
                             f"{s.decimal(f.printed)} ({f.places} decimal places)"),
         "cs": lambda f, s: (f"přesná hodnota {s.decimal(f.exact)} se nezaokrouhlí na vytištěné "
-                            f"{s.decimal(f.printed)} ({f.places} desetinných míst)")},
+                            f"{s.decimal(f.printed)} ({_places_cs(f.places)})")},
     Code.ROUNDING_FREE: {
         "en": lambda f, s: (f"a printed rounding of a value that depends on {', '.join(map(s.expr, f.symbols))}: "
                             "only a number rounds"),
@@ -181,7 +187,7 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "en": lambda f, s: (f"no precision tried decides whether the value rounds to {s.decimal(f.printed)} "
                             f"({f.places} decimal places)"),
         "cs": lambda f, s: (f"žádná vyzkoušená přesnost nerozhodne, zda se hodnota zaokrouhlí na {s.decimal(f.printed)} "
-                            f"({f.places} desetinných míst)")},
+                            f"({_places_cs(f.places)})")},
     Code.NOTHING_TO_CHECK: {"en": lambda f, s: "nothing to check", "cs": lambda f, s: "není co ověřit"},
     Code.NO_DERIVATION: {
         "en": lambda f, s: "no derivation registered for this entry yet",
@@ -261,6 +267,11 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
     Code.CONDITION_UNKNOWN: {
         "en": lambda f, s: "an implicit condition in no symbol: nothing to solve it for",
         "cs": lambda f, s: "implicitní podmínka bez symbolu: není podle čeho ji řešit"},
+    Code.CONDITIONS_NOT_ELIMINATING: {
+        "en": lambda f, s: (f"several conditions that, put in, leave {', '.join(map(s.expr, f.symbols))}: "
+                            "write each as a symbol's value (x = …) or state one condition"),
+        "cs": lambda f, s: (f"několik podmínek, po jejichž dosazení zůstává {', '.join(map(s.expr, f.symbols))}: "
+                            "zapište každou jako hodnotu symbolu (x = …), nebo uveďte jedinou podmínku")},
     Code.ASYMPTOTIC_WITHOUT_LIMIT: {
         "en": lambda f, s: "an asymptotic form (an O-term) without a stated limit: nothing to evaluate",
         "cs": lambda f, s: "asymptotický tvar (člen O) bez udané limity: není co vyčíslit"},
@@ -338,6 +349,12 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
     Code.Q_PRINTED_RESIDUAL: {
         "en": lambda f, s: f"printed lhs - rhs where {s.expr(f.unknown)} is derived",
         "cs": lambda f, s: f"rozdíl stran vytištěného vztahu, kde {s.expr(f.unknown)} je odvozeno"},
+    Code.Q_ROUNDING_WINDOW: {
+        "en": lambda f, s: "the distance from the printed formula and the most its rounded decimals allow",
+        "cs": lambda f, s: "odchylka od vytištěného vzorce a nejvíc, co dovolí jeho zaokrouhlená čísla"},
+    Code.Q_DERIVED_RESIDUAL: {
+        "en": lambda f, s: f"derived lhs - rhs where {s.expr(f.unknown)} is printed",
+        "cs": lambda f, s: f"rozdíl stran odvozeného vztahu, kde {s.expr(f.unknown)} je vytištěno"},
     Code.Q_UNKNOWN: {"en": lambda f, s: s.expr(f.unknown), "cs": lambda f, s: s.expr(f.unknown)},
     Code.Q_DIMENSIONS: {"en": lambda f, s: "dimensions", "cs": lambda f, s: "rozměry"},
     Code.ORDER_HOLDS: {

@@ -171,6 +171,23 @@ class _Source:
             self.names[key] = self.line(f"{self.emit(arg)}.sin_cos()")
         return self.names[key]
 
+    def real_only(self, e: sp.Basic) -> str:
+        """A function of real arguments with jumps or kinks (sign, floor, ceiling, Heaviside;
+        Min, Max) by flint's real-variable functions: nan for an argument that is not
+        certainly real (they take the real part alone), and inside an integrand, as |z|
+        (mpmath integrates it, cut at its jumps).  Heaviside at 0 is ½, as sympy's."""
+        if isinstance(e, sp.Heaviside) and len(e.args) == 2 and e.args[1] != sp.S.Half:
+            raise Unsupported("no ball evaluation for Heaviside with a value at 0 other than 1/2")
+        args = [self.emit(a) for a in e.args]
+        real = " and ".join(f"{a}.imag == 0" for a in args)
+        if e.func in _STEPS:
+            call = f"{args[0]}.{_STEPS[e.func]}()"
+        else:
+            call = args[0]
+            for a in args[1:]:
+                call = self.line(f"({call}.{_ORDERED[e.func]}({a}) if not an else acb('nan'))")
+        return f"({call} if not an and ({real}) else acb('nan'))"
+
     def constant(self, obj) -> str:
         name = f"c{len(self.constants)}"
         self.constants[name] = obj
@@ -235,6 +252,16 @@ class _Source:
             return _BINARY[e.func].format(a=self.emit(e.args[0]), b=self.emit(e.args[1]))
         if isinstance(e, sp.elliptic_e):
             return f"acb.elliptic_e({self.emit(e.args[0])})"
+        if e.func in _STEPS or e.func in _ORDERED:
+            return self.real_only(e)
+        if e.func in _INDEXED:
+            analytic_too = e.func in (sp.besselj, sp.besseli) and e.args[0].is_integer  # J_n, I_n: entire
+            call = _INDEXED[e.func].format(z=self.emit(e.args[1]), s=self.emit(e.args[0]))
+            return call if analytic_too else f"(acb('nan') if an else {call})"
+        if isinstance(e, sp.hyper):
+            ap = ", ".join(self.emit(a) for a in e.ap)
+            bq = ", ".join(self.emit(b) for b in e.bq)
+            return f"(acb('nan') if an else {self.emit(e.argument)}.hypgeom([{ap}], [{bq}]))"
         special = SPECIAL_FUNCTIONS.get(type(e).__name__)
         if special is type(e) and special.ball is not None and not any(isinstance(a, sp.Tuple) for a in e.args):
             args = ", ".join(self.emit(a) for a in e.args)  # each class's own rigorous route
@@ -243,7 +270,20 @@ class _Source:
             return f"acb({self.constant(int(sp.factorial(e.args[0])))})"
         if isinstance(e, sp.Integral) and len(e.limits) == 1 and len(e.limits[0]) == 3:
             return f"{self.constant(_compile_integral(e))}(env, an, work)"
+        if isinstance(e, (sp.Sum, sp.Product)) and len(e.limits) == 1 and not e.limits[0][1:] \
+                .has(sp.oo, -sp.oo, sp.zoo):
+            return f"{self.constant(_compile_series(e))}(env, an, work)"
         raise Unsupported(f"no ball evaluation for {e.func.__name__}")
+
+
+_STEPS = MappingProxyType({sp.sign: "real_sgn", sp.floor: "real_floor", sp.ceiling: "real_ceil",
+                          sp.Heaviside: "real_heaviside"})
+_ORDERED = MappingProxyType({sp.Min: "real_min", sp.Max: "real_max"})
+#: functions of an order (or index) and an argument, ``{s}`` and ``{z}``: in an integrand only
+#: where entire (a branch cut or a logarithmic end flint's call cannot flag)
+_INDEXED = MappingProxyType({sp.besselj: "{z}.bessel_j({s})", sp.bessely: "{z}.bessel_y({s})",
+                             sp.besseli: "{z}.bessel_i({s})", sp.besselk: "{z}.bessel_k({s})",
+                             sp.polylog: "{z}.polylog({s})", sp.expint: "{z}.expint({s})"})
 
 
 def _compile(e: sp.Basic):
@@ -256,6 +296,35 @@ def _compile(e: sp.Basic):
     namespace = {"acb": flint.acb, "arb": flint.arb, **source.constants}
     exec(compile(text, "<quasicentral ball function>", "exec"), namespace)  # noqa: S102 - our own source
     return namespace["ball"]
+
+
+#: terms a finite sum or product in balls adds one by one; beyond, it has no ball (mpmath's
+#: series summation takes it)
+BALL_TERMS = 10_000
+
+
+def _compile_series(e: sp.Sum | sp.Product):
+    """A finite sum or product whose bounds are exact integers at the point, term by term (nan
+    where they are not integers or hold more than BALL_TERMS terms: no ball then)."""
+    import flint
+
+    var, lo, hi = e.limits[0]
+    lower, upper, term = _compile(lo), _compile(hi), _compile(e.function)
+    product = isinstance(e, sp.Product)
+
+    def total(env, an, work):
+        a, b = (end(env, an, work) for end in (lower, upper))
+        if not (a.imag == 0 and b.imag == 0):
+            return flint.acb("nan")
+        a, b = a.real.unique_fmpz(), b.real.unique_fmpz()
+        if a is None or b is None or int(b) - int(a) >= BALL_TERMS:
+            return flint.acb("nan")
+        out = flint.acb(1 if product else 0)
+        for k in range(int(a), int(b) + 1):
+            value = term({**env, var: flint.acb(k)}, an, work)
+            out = out * value if product else out + value
+        return out
+    return total
 
 
 def _compile_integral(e: sp.Integral):

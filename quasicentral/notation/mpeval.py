@@ -17,57 +17,10 @@ from sympy.printing.pycode import MpmathPrinter
 from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_mpf, ball_function, ball_value,
                                          compile_path, flint_precision, mp_to_acb)
 from quasicentral.notation.integrals import infinite_end, prepare
+from quasicentral.notation.quadrature import breaks, frequency, inside, quad
 from quasicentral.notation.series import geometric_sum
 from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
 from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
-
-QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
-QUAD_PIECES_GAIN = 100  # ... and the least gain in its error estimate for which it cuts further
-
-
-def _quad(f, interval, singular: bool = False, omega=None):
-    """mpmath.quad with guard digits.  An integrand singular at an endpoint (1/√(1 − ζ²))
-    loses about half the working digits to cancellation in 1 − ζ next to it, so there
-    (``singular``, or a non-finite value at an end) the precision is doubled; elsewhere ten
-    guard digits suffice.  On an unbounded path an integrand that oscillates with the angular
-    frequency ``omega`` (sin ωt/t, J₀(ωt)) goes to mpmath's ``quadosc``, which sums it period
-    by period and extrapolates: tanh–sinh alone returns 5.42 for ∫₀^∞ sin t/t dt = π/2."""
-    dps = mpmath.mp.dps
-    a, b = interval
-    unbounded = not (mpmath.isfinite(a) and mpmath.isfinite(b))
-    for end in (a, b):
-        if not mpmath.isfinite(end):
-            continue
-        try:
-            with mpmath.workdps(15):
-                val = f(end)
-            singular = singular or not mpmath.isfinite(val)
-        except (ValueError, ZeroDivisionError, TypeError, OverflowError):
-            singular = True
-    if unbounded:  # tanh–sinh maps a half-line (or the line) itself; no cutting into pieces
-        with mpmath.workdps(2 * dps if singular else dps + 10):
-            if omega is not None and mpmath.im(omega) == 0 and mpmath.re(omega) > 0:
-                return +mpmath.quadosc(f, [a, b], omega=mpmath.re(omega))
-            return +mpmath.quad(f, [a, b])
-    # tanh–sinh on one interval misses oscillations over a long path (∫ sin² z … dz over
-    # twenty radians is off in the 10th digit at 30 digits): where its error estimate exceeds
-    # the working precision, the path is cut into more pieces — while cutting helps.  Where
-    # four times the pieces do not gain QUAD_PIECES_GAIN in the estimate, the trouble is not
-    # the path's length but a singularity inside it (a branch point of a root that turns
-    # negative): more pieces would only cost time, and the value stands as it is, for the
-    # precision ladder to judge
-    with mpmath.workdps(2 * dps if singular else dps + 10):
-        tol = mpmath.mpf(10) ** -dps
-        pieces, before = 1, None
-        while True:
-            nodes = mpmath.linspace(a, b, pieces + 1) if pieces > 1 else [a, b]
-            val, err = mpmath.quad(f, nodes, error=True)
-            if err <= tol * max(abs(val), tol) or pieces >= QUAD_MAX_PIECES:
-                break
-            if before is not None and not err * QUAD_PIECES_GAIN <= before:
-                break
-            pieces, before = pieces * 4, err
-    return +val
 
 
 def _ball_first(complete: str | None, incomplete: str | None, fallback):
@@ -98,7 +51,7 @@ MPMATH_NAMES = MappingProxyType({
     "elliptic_f": _ball_first(None, "elliptic_f", mpmath.ellipf),
     "elliptic_e": _ball_first("elliptic_e", "elliptic_e_inc", mpmath.ellipe),
     "elliptic_pi": mpmath.ellippi,  # real only for some n, φ, m: mpmath decides
-    "quad": _quad,
+    "quad": quad,
     # DLMF chapters 19, 20 and 22: each class evaluates itself (modulus k, guard bits inside)
     **{name: cls.mp for name, cls in SPECIAL_FUNCTIONS.items()},
 })
@@ -281,7 +234,7 @@ def _limit(form, outer):
         g = lambda t: f(t, *vals)  # noqa: E731
         direct = _continuous_value(g, x0, sides)
         if direct is None:
-            direct = _small_steps(g, x0, sides)
+            direct = _small_steps(g, x0, sides) if mpmath.isfinite(x0) else _far_out(g, x0)
         if direct is not None:
             return direct
         out = []
@@ -346,6 +299,36 @@ def _small_steps(g, x0, sides):
     return +found[-1]
 
 
+#: the powers of two :func:`_far_out` steps through: 2^8, 2^16, … up to 2^(FAR_OUT_REACH·dps)
+FAR_OUT_STEP, FAR_OUT_REACH = 8, 5
+
+
+def _far_out(g, x0):
+    """The limit of g at ±∞ where g settles far out: g at ±2^8, ±2^16, … (up to
+    2^(FAR_OUT_REACH·dps)), each at enough extra precision for what cancels in it there (eˣ − 1
+    at x = θ/T, and its square e²ˣ − 2eˣ + 1: 0.61 digits per power of two), until three in a row agree to :data:`AGREEMENT_FRACTION` of the working
+    digits.  The sequences (x = 1, 2, …) never leave a physical scale such as an Einstein
+    temperature of 10³ K, where C_V(T) → 3Nk_B has not begun to settle.  None where g does not
+    settle so (a slow, logarithmic approach): the sequences decide."""
+    dps = mpmath.mp.dps
+    tol = mpmath.mpf(10) ** (-AGREEMENT_FRACTION * dps)
+    sign = 1 if x0 > 0 else -1
+    found: list = []
+    try:
+        for k in range(FAR_OUT_STEP, FAR_OUT_REACH * dps, FAR_OUT_STEP):
+            with mpmath.workdps(dps + int(0.61 * k) + 10):
+                found.append(+g(sign * mpmath.mpf(2) ** k))
+            if not mpmath.isfinite(found[-1]):
+                return None
+            last = found[-3:]
+            size = max(abs(v) for v in last)
+            if len(last) == 3 and all(abs(v - last[-1]) <= tol * size for v in last):
+                return +last[-1]
+    except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence):
+        return None
+    return None
+
+
 def _derivative(form, outer):
     counts = [(v, int(c)) for v, c in form.variable_count]
     dummies = tuple(sp.Dummy(f"d{i}") for i in range(len(counts)))
@@ -361,19 +344,73 @@ def _derivative(form, outer):
     return value
 
 
+#: CPU seconds sympy may spend on the inner integral of a nested one in closed form
+INNER_CLOSED_SECONDS = 3.0
+
+
+def _closed_inner(inner: sp.Integral) -> sp.Expr | None:
+    """The inner integral of a nested one in closed form, where sympy finds one free of
+    integrals and of case distinctions within :data:`INNER_CLOSED_SECONDS` (None else).  Only a
+    candidate: :func:`_nested_integral` uses it where it agrees with the inner quadrature."""
+    try:
+        with time_limit(INNER_CLOSED_SECONDS) as limit:
+            done = inner.doit(conds="none")
+    except TimeLimitExceeded as exc:
+        if limit is None or not limit.owns(exc):
+            raise
+        return None
+    except Exception:  # noqa: BLE001 - sympy's integrator failing is only no closed form
+        return None
+    if done.has(sp.Integral, sp.Piecewise, sp.nan, sp.zoo, sp.oo, -sp.oo):
+        return None
+    return done
+
+
 def _nested_integral(form: sp.Integral, outer: tuple[sp.Symbol, ...]):
     """An integral over several variables (∫∫ f dt du, inner limits perhaps depending on the
     outer variable) as the integral over its outermost variable of the inner integral's value,
-    each by quadrature at the working precision."""
+    by quadrature at the working precision — an oscillating integrand on an unbounded outer path
+    through quadosc, as a single integral's.  Where sympy gives the inner integral in closed form
+    (:func:`_closed_inner`) and that form agrees with the inner quadrature to
+    AGREEMENT_FRACTION of the working digits at a point of the path, the outer quadrature
+    integrates the closed form: ∫₀^∞∫₀^∞ e^{−γ(t+s)} cos ω(t − s) ds dt is a quadosc of a
+    quadosc (minutes at 30 digits) by quadrature alone, one quadosc with the inner closed form
+    (milliseconds); a closed form that disagrees (a sympy integral valid on other parameters
+    only) is never used."""
     var, lo, hi = form.limits[-1]
     x = sp.Dummy("x")
-    body = mp_function(_inner(form, var, x), (x,) + outer)
+    inner = _inner(form, var, x)
+    body = mp_function(inner, (x,) + outer)
     bounds = mp_lambdify(outer, [lo, hi])
+    unbounded = any(end in (sp.oo, -sp.oo) for end in (lo, hi))
+    omega = frequency(form.function, var) if unbounded else None
+    rate = mp_lambdify(outer, omega) if omega is not None else None
+    closed = _closed_inner(inner) if isinstance(inner, sp.Integral) else None
+    fast = mp_function(closed, (x,) + outer) if closed is not None else None
+    trusted: dict = {}  # point -> whether the closed form agreed there
+
+    def integrand(a, b, vals):
+        # checked at each point (at the first precision it is met at: the points of a ladder are
+        # binary numbers, the same at every rung): a form sympy found for some parameters only
+        # (its conditions dropped) may agree at one point and not at the next
+        if fast is None:
+            return body
+        key = vals
+        if key not in trusted:
+            z = (a + b) / 2 if mpmath.isfinite(a) and mpmath.isfinite(b) else \
+                (a + 1 if mpmath.isfinite(a) else b - 1 if mpmath.isfinite(b) else mpmath.mpf(0))
+            try:
+                trusted[key] = _agreeing(fast(z, *vals), body(z, *vals)) is not None
+            except (ValueError, ZeroDivisionError, TypeError, OverflowError):
+                trusted[key] = False
+        return fast if trusted[key] else body
 
     def value(*vals):
         vals = vals[:len(outer)]
         a, b = bounds(*vals)
-        return _quad(lambda z: body(z, *vals), [a, b])
+        f = integrand(a, b, vals)
+        w = rate(*vals) if rate is not None else None
+        return quad(lambda z: f(z, *vals), [a, b], omega=w)
     return value
 
 
@@ -401,51 +438,6 @@ def _quadrature(integral: sp.Integral, outer: tuple[sp.Symbol, ...]):
     return value
 
 
-#: functions with a jump or a kink where their argument crosses zero
-_KINKED = (sp.Abs, sp.sign, sp.Heaviside)
-
-
-def _breaks(f: sp.Expr, var: sp.Symbol) -> list:
-    """Where ``f`` has a jump or a kink along its path: the zeros in ``var`` of the arguments of
-    |·|, sign and Heaviside that sympy can solve (polynomials of degree ≤ 2 in the variable)."""
-    out = []
-    for g in f.atoms(*_KINKED):
-        arg = g.args[0]
-        if var in arg.free_symbols and arg.is_polynomial(var) and sp.degree(arg, var) <= 2:
-            out += sp.solve(arg, var)
-    return list(dict.fromkeys(out))
-
-
-#: functions that oscillate in their last argument, with a period 2π/ω for an argument ωt + c
-#: (the Bessel functions J, Y asymptotically)
-_OSCILLATING = (sp.sin, sp.cos, sp.besselj, sp.bessely)
-
-
-def _frequency(f: sp.Expr, var: sp.Symbol) -> sp.Expr | None:
-    """The angular frequency ω with which ``f`` oscillates in ``var`` where every oscillating
-    factor has an argument ωt + c with one and the same |ω| (None where there is none, or
-    several: tanh–sinh then, and the precision ladder judges)."""
-    found = set()
-    for g in f.atoms(*_OSCILLATING):
-        arg = g.args[-1]
-        if var not in arg.free_symbols:
-            continue
-        if not arg.is_polynomial(var) or sp.degree(arg, var) != 1:
-            return None
-        found.add(sp.Abs(sp.diff(arg, var)))
-    return found.pop() if len(found) == 1 else None
-
-
-def _inside(c, a, b) -> bool:
-    """Is the break ``c`` real and strictly between the ends (finite, in either order)?"""
-    if not (mpmath.isfinite(c) and mpmath.isfinite(a) and mpmath.isfinite(b)):
-        return False
-    if abs(mpmath.im(c)) > 0 or mpmath.im(a) != 0 or mpmath.im(b) != 0:
-        return False
-    lo, hi = sorted((mpmath.re(a), mpmath.re(b)))
-    return lo < mpmath.re(c) < hi
-
-
 @lru_cache(maxsize=2048)
 def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singular: bool):
     """One piece's value at the values of its parameters (one function per piece, so that its
@@ -465,10 +457,10 @@ def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singu
     def mpmath_form():
         if not compiled:
             x = sp.Dummy("x")  # the variable may also be a limit: ∫_0^t f(t) dt
-            omega = _frequency(integral.function, var) if infinite_end(integral) else None
+            omega = frequency(integral.function, var) if infinite_end(integral) else None
             compiled.extend((mp_lambdify((x,) + params, integral.function.xreplace({var: x})),
                              mp_lambdify(params, lo), mp_lambdify(params, hi),
-                             [mp_lambdify(params, r) for r in _breaks(integral.function, var)],
+                             [mp_lambdify(params, r) for r in breaks(integral.function, var)],
                              mp_lambdify(params, omega) if omega is not None else None))
         return compiled
 
@@ -480,14 +472,14 @@ def _piece_quadrature(integral: sp.Integral, params: tuple[sp.Dummy, ...], singu
             got = _ball_quadrature(ball, params, vals)
             if got is not None:
                 return got
-        body, lower, upper, breaks, frequency = mpmath_form()
+        body, lower, upper, jumps, rate = mpmath_form()
         a, b = lower(*vals), upper(*vals)
-        inner = sorted({mpmath.re(c) for c in (r(*vals) for r in breaks) if _inside(c, a, b)})
+        inner = sorted({mpmath.re(c) for c in (r(*vals) for r in jumps) if inside(c, a, b)})
         if inner:  # a jump or a kink of the integrand: each smooth stretch on its own
             ends = [a, *inner, b] if a < b else [a, *reversed(inner), b]
-            return mpmath.fsum(_quad(lambda z: body(z, *vals), [u, w], singular=singular) for u, w in zip(ends, ends[1:]))
-        omega = frequency(*vals) if frequency is not None else None
-        return _quad(lambda z: body(z, *vals), [a, b], singular=singular, omega=omega)
+            return mpmath.fsum(quad(lambda z: body(z, *vals), [u, w], singular=singular) for u, w in zip(ends, ends[1:]))
+        omega = rate(*vals) if rate is not None else None
+        return quad(lambda z: body(z, *vals), [a, b], singular=singular, omega=omega)
 
     def value(*vals):
         # remembered: a printed integral that is also the derived one (or an erratum's printed
@@ -514,7 +506,6 @@ def _ball_quadrature(ball, outer, vals):
     return ball_value(ball, outer, vals, Work(budget, smooth_ends=True))
 
 
-
 @lru_cache(maxsize=1024)
 def rung_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
     """``expr`` compiled for the rungs of a precision ladder: a function of mpmath values, like
@@ -534,7 +525,6 @@ def rung_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
         got = ball_value(ball, args, vals, Work())
         return got if got is not None else mp_function(expr, args)(*vals)
     return value
-
 
 
 def mp_value(value: sp.Expr, dps: int):

@@ -89,9 +89,38 @@ def printed_eq(lhs, rhs, evaluate: bool = False):
 class Approx(sp.Function):
     """A printed rounding: ``Approx(x, value, places)`` holds when x rounds to ``value`` at
     ``places`` decimal places (a transcription writes ``Approx(x, 4.965114)``: the places are
-    the digits printed)."""
+    the digits printed).  A formula with printed decimals, ``Approx(theta, 1.22*lam/D)``, has
+    for ``places`` a tuple of (decimal, places) pairs: it holds where x lies within what
+    rounding those decimals allows (:meth:`window`)."""
 
     nargs = 3
+
+    @property
+    def is_formula(self) -> bool:
+        """A formula with printed decimals (not one printed number)."""
+        return isinstance(self.args[2], sp.Tuple)
+
+    def equation(self) -> sp.Eq:
+        """x = value, as printed (its dimensions are the rounding's)."""
+        return sp.Eq(self.args[0], self.args[1], evaluate=False)
+
+    def window(self) -> tuple[sp.Expr, sp.Expr]:
+        """A formula's rounding as (|x − value|, Σᵢ hᵢ·|∂value/∂cᵢ|): cᵢ each decimal printed,
+        hᵢ half a unit of its last place (1.22: 0.005) — x must lie where the value lands when
+        each decimal moves within its rounding (to first order, which is exact for a decimal
+        coefficient).  A decimal sympy folded with another number (2·0.443 is 0.886) is no
+        longer found in the value: there its relative half-unit is taken of the whole value."""
+        x, value, places = self.args
+        allowed = sp.Integer(0)
+        for c, p in places:
+            half = sp.Rational(1, 2) / sp.Integer(10) ** int(p)
+            atom = sp.Dummy("c")
+            swapped = value.xreplace({c: atom}) if c != 0 else value
+            if atom in swapped.free_symbols:
+                allowed += half * sp.Abs(sp.diff(swapped, atom).xreplace({atom: c}))
+            else:
+                allowed += half / abs(c) * sp.Abs(value) if c != 0 else half
+        return sp.Abs(x - value), allowed
 
     def _latex(self, printer):
         return rf"{printer._print(self.args[0])} \approx {printer._print(self.args[1])}"
@@ -101,7 +130,8 @@ def _approx(expr, value, places=None):
     """``Approx`` as a transcription writes it: the printed decimal's places are counted by the
     reader (:data:`APPROX_PLACES`)."""
     if places is None:
-        raise SymbolError("Approx(x, value): value is a printed decimal such as 4.965114")
+        raise SymbolError("Approx(x, value): value is a printed decimal such as 4.965114, or a formula "
+                          "with one such as 1.22*lam/D")
     return Approx(expr, value, places)
 
 

@@ -255,10 +255,16 @@ class _Builder:
         target = self.calls.get(name, self.ns[name])
         places_of = getattr(target, "places_of", None)  # a printed rounding: its places are counted here
         if places_of is not None and len(node.args) > places_of:
-            literal = ast.get_source_segment(self.source, node.args[places_of]) or ""
-            if not isinstance(node.args[places_of], ast.Constant):
-                _fail(node, f"{name}(x, value): value is a printed decimal such as 4.965114")
-            kwargs["places"] = decimal_places(literal)
+            value = node.args[places_of]
+            if isinstance(value, ast.Constant):
+                kwargs["places"] = decimal_places(ast.get_source_segment(self.source, value) or "")
+            else:  # 1.22*lam/D: each printed decimal with its places
+                found = sorted(decimal_literals(ast.get_source_segment(self.source, value) or "").items(),
+                               key=lambda kv: (kv[0], kv[1]))
+                if not found:
+                    _fail(node, f"{name}(x, value): value prints no decimal digits (a printed decimal "
+                                "such as 4.965114, or a formula with one such as 1.22*lam/D)")
+                kwargs["places"] = sp.Tuple(*(sp.Tuple(v, p) for v, p in found))
         if not callable(target) or isinstance(target, sp.Basic) and not isinstance(target, sp.FunctionClass):
             _fail(node, f"{name} is not a function: it cannot be called")
         try:
