@@ -62,6 +62,7 @@ PREAMBLE = r"""\documentclass[11pt,a4paper]{article}
 \usepackage{graphicx}
 \usepackage{pdflscape}
 \usepackage{array,booktabs,longtable}
+\usepackage{needspace}
 \usepackage[hidelinks,unicode,bookmarksnumbered]{hyperref}
 %% the paper's notation
 \DeclareMathOperator{\arccotg}{arccotg}

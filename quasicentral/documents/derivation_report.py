@@ -129,7 +129,8 @@ def _numbering(steps: list[Step], lang: str) -> str:
 def _errata_table(steps: list[Step], lang: str) -> str:
     W = WORDS[lang]
     errata = [s for s in steps if s.is_erratum]
-    out = [f"\\section{{{W['errata_table']}}}\\label{{sec:sidebyside}}\n"]
+    # a heading with at least its table's first rows below it, never alone at the foot of a page
+    out = [f"\\needspace{{10\\baselineskip}}\\section{{{W['errata_table']}}}\\label{{sec:sidebyside}}\n"]
     if not errata:
         return "".join(out) + W["none_found"] + "\n\n"
     out.append("{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.09\\linewidth}p{0.31\\linewidth}"
