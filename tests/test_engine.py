@@ -1030,3 +1030,17 @@ def test_a_model_giving_a_function_whole_reaches_it_inside_an_integral():
     assert isinstance(right, Verified), right.detail
     wrong = check([sp.Eq(sp.Integral(v * f, (v, 0, sp.oo)), a)], {}, der, "test:norm", OPTS, TABLE, norm())
     assert isinstance(wrong, Refuted), wrong.detail
+
+
+def test_a_limit_in_a_defined_symbol_keeps_its_variable_bound():
+    """lim_{β→0} sin β/β with β = (πa) sin θ defined: the definition was put in for the limit's
+    variable too (Limit(…, π a sin θ, 0): "TypeError: cannot create mpf from theta", a
+    newcomer's textbook limit inconclusive); a bound variable is left bound."""
+    from quasicentral.notation.domain import substitute_definitions
+
+    b, th, a = sp.symbols("beta theta a", positive=True)
+    got = substitute_definitions(sp.Limit(sp.sin(b) / b, b, 0) + b, {b: sp.pi * a * sp.sin(th)})
+    (lim,) = got.atoms(sp.Limit)
+    assert lim.args[1] not in (b, th) and lim.doit() == 1 and got - lim == sp.pi * a * sp.sin(th)
+    total = substitute_definitions(sp.Sum(b**2, (b, 1, 3)), {b: 2 * a})
+    assert total.doit() == 14

@@ -267,3 +267,44 @@ def test_a_damped_double_integral_to_infinity_is_decided(tmp_path):
     assert rows["damped:spectrum"]["status"] == "verified", rows["damped:spectrum"]["detail"]
     assert rows["damped:spectrum-typo"]["status"] == "erratum", rows["damped:spectrum-typo"]["detail"]
     assert proc.returncode == 0
+
+
+def test_mutate_goes_on_over_an_o_term_in_two_symbols(tmp_path):
+    """A newcomer's arcsin(λ/a) = λ/a + O(λ³): a mutant the fast check verified was set against
+    the domain as two values, and the O-term's Landau symbol reached lambdify — "internal
+    error: NameError: name 'Landau' is not defined" ended the whole run."""
+    folder = tmp_path / "small"
+    (folder / "catalog").mkdir(parents=True)
+    (folder / "text.toml").write_text('''id = "small"
+title = "A small angle"
+authors = ["A newcomer"]
+year = 2026
+language = "en"
+check = "identity"
+
+[symbols.lam]
+latex = '\\\\lambda'
+dimension = "m"
+assumptions = ["positive"]
+range = ["4e-7", "7e-7"]
+
+[symbols.a]
+latex = 'a'
+dimension = "m"
+assumptions = ["positive"]
+range = ["1e-5", "1e-4"]
+''')
+    (folder / "catalog" / "s1.toml").write_text('''section = "1"
+title = "Small angles"
+
+[[equation]]
+id = "small:1"
+name = "the first minimum's angle for a small wavelength"
+latex = \'\'\'\\\\arcsin\\\\frac{\\\\lambda}{a} = \\\\frac{\\\\lambda}{a} + O(\\\\lambda^3)\'\'\'
+printed = \'\'\'Eq(asin(lam/a), lam/a + O(lam**3))\'\'\'
+''')
+    proc = cli("mutate", "--text", folder, "--jobs", "1", "--json", cache=tmp_path / "cache")
+    assert_clean_stderr(proc)
+    assert "internal error" not in proc.stderr
+    doc = json.loads(proc.stdout)
+    assert doc["entries"] == 1 and doc["false_alarms"] == 0

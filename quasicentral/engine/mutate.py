@@ -265,12 +265,15 @@ def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTab
     the derived one with the domain's signs as assumptions (κ ≥ 0 ⇒ √(κ²) = κ);
     :data:`Equivalence.NUMERIC` when the full checker (:data:`STRONG`) verifies it at every
     point; else None."""
+    from quasicentral.engine.asymptotic import passage_relation
     from quasicentral.engine.claims import claims_for
     from quasicentral.engine.ladder import numeric
     from quasicentral.engine.proofs import prove_zero
     from quasicentral.notation.domain import substitute_definitions
     from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
+    if passage_relation(mutant):  # an O-term is judged along its passage, never as two values
+        return None
     try:
         with time_limit(FAST.symbolic_seconds) as limit:
             cm = claims_for(mutant, der, result)
@@ -286,8 +289,11 @@ def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTab
     repl = _domain_assumptions(der, syms, table)
     if repl and all(prove_zero(r.xreplace(repl), 2.0, force=False) for r in residuals):
         return Equivalence.PROOF
-    if all(isinstance(numeric(c, der.domain, f"{label}#{i}", STRONG, table), Verified) for i, c in enumerate(cm)):
-        return Equivalence.NUMERIC
+    try:
+        if all(isinstance(numeric(c, der.domain, f"{label}#{i}", STRONG, table), Verified) for i, c in enumerate(cm)):
+            return Equivalence.NUMERIC
+    except Exception:  # noqa: BLE001 - a mutant the numbers cannot judge is not shown equivalent
+        return None
     return None
 
 

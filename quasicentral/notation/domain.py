@@ -74,6 +74,8 @@ def substitute_definitions(expr: sp.Basic, defs: dict[sp.Basic, sp.Expr], rounds
     and then at its definition: its variable is bound, and is not replaced."""
     if defs and expr.has(sp.Derivative):
         expr = _bind_derivatives(expr, set(defs))
+    if defs and expr.has(sp.Limit, sp.Sum, sp.Product, sp.Integral):
+        expr = _bind_variables(expr, set(defs))
     for _ in range(rounds):
         new = expr.xreplace(defs) if defs else expr
         if new == expr:
@@ -89,6 +91,18 @@ def _bind_derivatives(expr: sp.Basic, names: set) -> sp.Basic:
         return sp.Subs(d.xreplace(bound), tuple(bound.values()), tuple(bound))
 
     return expr.replace(lambda a: isinstance(a, sp.Derivative) and any(v in names for v in a.variables), bind)
+
+
+def _bind_variables(expr: sp.Basic, names: set) -> sp.Basic:
+    """Each limit, sum, product or integral whose variable is a defined symbol (lim_{β→0} sin β/β
+    with β = (πa/λ) sin θ) over a dummy of that name instead: its variable is bound, and is not
+    replaced by the definition."""
+    def bound(a) -> dict:
+        found = [a.args[1]] if isinstance(a, sp.Limit) else [lim[0] for lim in a.limits]
+        return {v: sp.Dummy(str(v)) for v in found if v in names}
+
+    return expr.replace(lambda a: isinstance(a, (sp.Limit, sp.Sum, sp.Product, sp.Integral)) and bool(bound(a)),
+                        lambda a: a.xreplace(bound(a)))
 
 
 def seed_for(label: str) -> int:
