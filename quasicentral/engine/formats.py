@@ -210,9 +210,11 @@ def errata_table(doc: dict) -> str:
         w = r["witness"]
         ratio = bool(w) and w.get("quantity_code") == Code.Q_ORDER_RATIO.value
         bound = bool(w) and w.get("quantity_code") in (Code.Q_LESSER_GREATER.value, Code.Q_ROUNDING_WINDOW.value)
+        sides = bool(w) and w.get("quantity_code") == Code.Q_SIDES.value  # an identity: no "printed" side
         wit = "" if not w else (
             (f"|lhs − rhs|/|O-term| {_short_number(w['printed'])} at the last step, {_short_number(w['corrected'])} "
              "three before" if ratio else f"{_short_number(w['printed'])} > {_short_number(w['corrected'])}" if bound
+             else f"left {_short_number(w['printed'])} vs right {_short_number(w['corrected'])}" if sides
              else f"printed {_short_number(w['printed'])} vs {_short_number(w['corrected'])}")
             + (" (certified)" if w["certified"] else ""))
         rows.append([r["id"], ",".join(r["cause"]), r["status"], wit])
