@@ -1044,3 +1044,16 @@ def test_a_limit_in_a_defined_symbol_keeps_its_variable_bound():
     assert lim.args[1] not in (b, th) and lim.doit() == 1 and got - lim == sp.pi * a * sp.sin(th)
     total = substitute_definitions(sp.Sum(b**2, (b, 1, 3)), {b: 2 * a})
     assert total.doit() == 14
+
+
+def test_a_formula_rounding_allows_what_its_decimals_allow_and_no_more():
+    """θ ≈ 1.22 λ/D allows ±0.005 λ/D; in 2.0·x² the decimal 2 stands twice (the coefficient
+    and the exponent): the exponent's derivative would widen the allowance by x² ln x · 0.05,
+    so the whole value's relative half-unit (2.5 %) is taken instead."""
+    from quasicentral.notation.symbols import Approx
+
+    x, lam, D = sp.symbols("x lam D", positive=True)
+    _, allowed = Approx(x, sp.Rational(122, 100) * lam / D, sp.Tuple(sp.Tuple(sp.Rational(122, 100), 2))).window()
+    assert sp.simplify(allowed - sp.Rational(5, 1000) * lam / D) == 0
+    _, allowed = Approx(x, 2 * x**2, sp.Tuple(sp.Tuple(sp.Integer(2), 1))).window()
+    assert sp.simplify(allowed - sp.Rational(1, 20) * x**2) == 0

@@ -397,10 +397,15 @@ def _nested_integral(form: sp.Integral, outer: tuple[sp.Symbol, ...]):
             return body
         key = vals
         if key not in trusted:
-            z = (a + b) / 2 if mpmath.isfinite(a) and mpmath.isfinite(b) else \
-                (a + 1 if mpmath.isfinite(a) else b - 1 if mpmath.isfinite(b) else mpmath.mpf(0))
+            # at three places along the outer path: a form valid on part of it only (its
+            # conditions dropped depend on the outer variable) disagrees at one of them
+            if mpmath.isfinite(a) and mpmath.isfinite(b):
+                zs = [a + (b - a) * mpmath.mpf(f) for f in ("0.25", "0.5", "0.75")]
+            else:
+                start, sign = (a, 1) if mpmath.isfinite(a) else (b, -1) if mpmath.isfinite(b) else (mpmath.mpf(0), 1)
+                zs = [start + sign * mpmath.mpf(d) for d in ("0.5", "2", "8")]
             try:
-                trusted[key] = _agreeing(fast(z, *vals), body(z, *vals)) is not None
+                trusted[key] = all(_agreeing(fast(z, *vals), body(z, *vals)) is not None for z in zs)
             except (ValueError, ZeroDivisionError, TypeError, OverflowError):
                 trusted[key] = False
         return fast if trusted[key] else body

@@ -115,7 +115,9 @@ class Approx(sp.Function):
         for c, p in places:
             half = sp.Rational(1, 2) / sp.Integer(10) ** int(p)
             atom = sp.Dummy("c")
-            swapped = value.xreplace({c: atom}) if c != 0 else value
+            # moved where it stands alone only: 2.0·x² holds the 2 twice, and the exponent's
+            # derivative would widen the allowance (the whole value's relative half-unit then)
+            swapped = value.xreplace({c: atom}) if c != 0 and value.count(c) == 1 else value
             if atom in swapped.free_symbols:
                 allowed += half * sp.Abs(sp.diff(swapped, atom).xreplace({atom: c}))
             else:
