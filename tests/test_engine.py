@@ -7,7 +7,7 @@ import sympy as sp
 
 import types
 
-from quasicentral.notation import balls, bridge, mpeval, quadrature
+from quasicentral.notation import balls, bridge, limits, mpeval, quadrature
 from quasicentral.engine import proofs
 from quasicentral.engine.claims import Claim
 from quasicentral.engine.ladder import numeric
@@ -1057,3 +1057,53 @@ def test_a_formula_rounding_allows_what_its_decimals_allow_and_no_more():
     assert sp.simplify(allowed - sp.Rational(5, 1000) * lam / D) == 0
     _, allowed = Approx(x, 2 * x**2, sp.Tuple(sp.Tuple(sp.Integer(2), 1))).window()
     assert sp.simplify(allowed - sp.Rational(1, 20) * x**2) == 0
+
+
+@pytest.mark.parametrize("expr, value", [
+    (sp.Limit(sp.besselj(1, g * t) * sp.sin(t) / sp.sqrt(t), t, 0, "+"), mpmath.mpf(0)),
+    (sp.Limit(sp.besselj(1, g * t) / t**3, t, 0, "+"), mpmath.inf),
+    (sp.Limit(-sp.besselj(1, g * t) / t**3, t, 0, "+"), -mpmath.inf),
+    (sp.Limit(t**2 * sp.exp(-g * t) * sp.besselj(0, t), t, sp.oo), mpmath.mpf(0)),
+    (sp.Limit(sp.besseli(1, g * t) / t**2, t, sp.oo), mpmath.inf),
+    (sp.Limit(t**2 * g, t, sp.oo), mpmath.inf),  # Aitken's Δ² would give its antilimit, 0
+    # approached as t^(−1/2): the heat equation's erfc(x/(2√(at))) at t → ∞, a newcomer's text
+    (sp.Limit(sp.erfc(1 / (2 * sp.sqrt(g * t))), t, sp.oo), mpmath.mpf(1)),
+    (sp.Limit(1 + sp.sqrt(t) * sp.besselj(0, g * t), t, 0, "+"), mpmath.mpf(1)),
+])
+def test_a_limit_that_is_zero_or_without_bound_has_that_value(expr, value):
+    """A limit 0 or ±∞ never agrees with itself to a fraction of its size, and a value approached
+    as a fractional power is no sequence's in integer powers: at a finite point
+    the steps of h fall (or grow) by one power law, far out the sequence falls below (or grows
+    beyond) that fraction of its largest term.  Before, each of these was inconclusive after
+    ~10 s of sequences (a newcomer's 'lim_{x→0+} J_1(ax) sin x/√x = a/2' never refuted)."""
+    f = mpeval.mp_function(expr, (g,))
+    for dps in (30, 60):
+        with mpmath.workdps(dps):
+            got = f(mpmath.mpf("0.8"))
+            # a limit holds to AGREEMENT_FRACTION of the working digits (its methods agree so far)
+            assert got == value if not value or mpmath.isinf(value) else \
+                abs(got - value) < mpmath.mpf(10) ** (-limits.AGREEMENT_FRACTION * dps)
+
+
+
+def test_a_logarithmic_growth_and_an_oscillation_are_not_power_laws():
+    """ln h at 0⁺ (exponent → 0) and h·sin(1/h) (exponents that differ decade by decade) are not
+    taken for 0 or ∞ by the power-law test: None, and the sequences decide."""
+    for g_of_h in (mpmath.log, lambda h: h * mpmath.sin(1 / h)):
+        with mpmath.workdps(30):
+            assert limits._power_law(g_of_h, mpmath.mpf(0), (1,)) is None
+
+
+@pytest.mark.parametrize("printed, wrong, right", [
+    (sp.Limit(sp.besselj(1, g * t) * sp.sin(t) / sp.sqrt(t), t, 0, "+"), g / 2, sp.Integer(0)),
+    (sp.Limit(t**2 * sp.exp(-g * t) * sp.besselj(0, t), t, sp.oo), sp.Integer(1), sp.Integer(0)),
+    (sp.Limit(sp.besselj(1, g * t) / t**3, t, 0, "+"), g, None),
+    (sp.Limit(sp.erfc(1 / (2 * sp.sqrt(g * t))), t, sp.oo), sp.Rational(1, 2), sp.Integer(1)),
+])
+def test_a_limit_printed_finite_that_is_zero_or_infinite_is_refuted(printed, wrong, right):
+    """The printed finite value against a limit 0 (every rung's difference is the printed value)
+    or ∞ (an infinite difference, which agrees with nothing): refuted; the true value 0 verified
+    (a printed limit ∞ is the asymptotic stage's, as the gallery's gallery:limit-infinite)."""
+    assert isinstance(numeric(Claim(printed, wrong, V), Domain(), "lim", OPTS, TABLE), Refuted)
+    if right is not None:
+        assert isinstance(numeric(Claim(printed, right, V), Domain(), "lim", OPTS, TABLE), Verified)

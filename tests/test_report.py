@@ -38,7 +38,7 @@ from quasicentral.notation.symbols import D, Ec, Ej, Fj, Kc, arccotg
 from quasicentral.cli import main
 from quasicentral.documents.breaking import display_rows
 from quasicentral.documents.latex import Notation, paper_latex, using
-from quasicentral.documents.prosetex import escape, text, with_math
+from quasicentral.documents.prosetex import clean_prose, escape, text, with_math
 
 S = shipped.symbols("brepta1953")  # the printer speaks a text's notation: here Brepta's
 P = shipped.symbols("pendulum")
@@ -780,3 +780,25 @@ def test_figures_speak_the_documents_language(generated):
                 assert f"{{figures/{f.name}.png}}" in docs[f"{t.id}-{kind}-en.tex"], (t.id, f.name, kind)
             if f.kind is figures.Kind.CURVES:
                 assert f.said("labels", "cs") != f.labels and f.said("xlabel", "cs") != f.xlabel, f.name
+
+
+def test_a_witness_in_a_document_has_its_units_names_and_powers_of_ten():
+    """A newcomer's Czech heat-conduction text: the witness read "lam = 109, a = 9,189e−5" in
+    the checker's names, without units, beside a verdict line in the text's.  Both now write the
+    point as the text does — λ, T₀ = 254,5 K, a = 9,189·10⁻⁵ m² s⁻¹ — and a limit without bound
+    as ∞."""
+    from quasicentral.engine.notes import render_note
+    from quasicentral.engine.reasons import Code, Reason
+    from quasicentral.engine.verdict import Witness
+
+    w = Witness({"T0": "509/2", "a": "0.00009189", "lam": "109"}, "10650.2", "18880.1", 4, True, Reason(Code.Q_SIDES))
+    units = {"T0": r"\mathrm{K}", "a": r"\mathrm{m}^{2}\,\mathrm{s}^{-1}"}
+    with using(Notation({"T0": "T_0", "a": "a", "lam": r"\lambda"}, units=units)):
+        short = blocks.witness_short(w, "cs")
+        note = with_math(clean_prose(steps_mod.reader_note("Svědek: {witness}.", w, "cs")), lang="cs")
+    assert r"$T_0 = 254{,}5\,\mathrm{K}$" in short and r"$\lambda = 109$" in short, short
+    assert r"$T_0$ = 254,5 $\mathrm{K}$" in note and r"$\lambda$ = 109" in note, note
+    assert r"\ensuremath{9{,}189\cdot 10^{-5}} $\mathrm{m}^{2}\,\mathrm{s}^{-1}$" in note, note
+    assert "lam =" not in note and "e-5" not in note and "e−5" not in note, note
+    assert render_note("{witness}", w, "cs").count("e-5") == 1  # the JSON's notes keep every digit as computed
+    assert blocks.number("inf", "en") == r"\infty" and blocks.number("-inf", "cs") == r"-\infty"

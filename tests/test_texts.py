@@ -47,6 +47,53 @@ def test_new_text_refuses_a_folder_in_use(tmp_path, capsys):
     assert code == 2 and "not empty" in err and err.count("\n") == 1
 
 
+
+def test_a_symbol_named_D_hides_the_derivative_shorthand(tmp_path, capsys):
+    """D for a diffusion coefficient (m²/s): any name a physicist writes is the text's; the
+    notation's D(f) shorthand is hidden in that text, whose derivatives are written Derivative."""
+    root = tmp_path / "diffusion"
+    (root / "catalog").mkdir(parents=True)
+    (root / "text.toml").write_text('''id = "diffusion"
+title = "Diffusion"
+authors = ["A. Lecturer"]
+year = 2026
+language = "en"
+check = "identity"
+
+[symbols.D]
+meaning = "the diffusion coefficient"
+latex = 'D'
+dimension = "m^2/s"
+assumptions = ["positive"]
+range = ["1/2", "2"]
+
+[symbols.t]
+meaning = "the time"
+latex = 't'
+dimension = "s"
+assumptions = ["positive"]
+range = ["1/2", "2"]
+''')
+    (root / "catalog" / "01.toml").write_text('''section = "1"
+title = "Spreading"
+
+[[equation]]
+id = "diffusion:1"
+name = "the growth of the variance"
+latex = '\\frac{d}{dt}\\,2Dt^2 = 4Dt'
+printed = \'\'\'Eq(Derivative(2*D*t**2, t), 4*D*t)\'\'\'
+
+[[equation]]
+id = "diffusion:2"
+name = "the variance, mistyped"
+latex = '\\frac{d}{dt}\\,2Dt^2 = 2Dt'
+printed = \'\'\'Eq(Derivative(2*D*t**2, t), 2*D*t)\'\'\'
+''')
+    code, out, err = _run(["verify", "--text", str(root), "--json"], capsys)
+    assert code == 1, err
+    rows = {r["id"]: r for r in json.loads(out)["equations"]}
+    assert rows["diffusion:1"]["status"] == "verified" and rows["diffusion:2"]["verdict"] == "refuted", rows
+
 def test_a_third_text_verifies_with_its_own_symbols(kepler, capsys):
     """G, M, e, a, p, T and θ are the text's own; u(θ), r(θ) are functions of θ, and u'' reaches
     the numeric and certified stages."""

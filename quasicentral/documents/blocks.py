@@ -11,7 +11,7 @@ import sys
 import sympy as sp
 
 from quasicentral.documents.breaking import display_rows, relation_lines, visible_width, wrap_row
-from quasicentral.documents.latex import names_as_printed, notation, paper_latex
+from quasicentral.documents.latex import names_as_printed, notation, paper_latex, parameter_latex, parameter_unit
 from quasicentral.documents.prosetex import MATH_CHARS, escape, text
 from quasicentral.documents.prose import WORDS, TextProse
 from quasicentral.documents.steps import Step, paragraphs, ref_of  # noqa: F401 - re-exported
@@ -248,6 +248,8 @@ def number(value: str, lang: str, digits: int = 4) -> str:
     """A decimal in a few significant digits, with the decimal comma in Czech (math mode)."""
     from quasicentral.notation.symbols import FUNCTIONS
 
+    if str(value).strip() in ("inf", "-inf"):  # a limit without bound (the witness's own spelling)
+        return "-\\infty" if str(value).strip() == "-inf" else "\\infty"
     try:
         x = float(sp.N(transcription.parse(str(value), dict(FUNCTIONS)), 20))
     except (transcription.TranscriptionError, TypeError, ValueError):
@@ -275,7 +277,7 @@ def witness_short(w, lang: str, point: bool = True) -> str:
     if code == Code.Q_DIMENSIONS.value:
         return W["dims_bad"] + "."
     params = (_wget(w, "parameters") or {}) if point else {}
-    pts = ", ".join(f"${_param_name(k)} = {number(v, lang)}$" for k, v in sorted(params.items()))
+    pts = ", ".join(f"${parameter_latex(k)} = {number(v, lang)}{parameter_unit(k)}$" for k, v in sorted(params.items()))
     printed, corrected = str(_wget(w, "printed")), str(_wget(w, "corrected"))
     digits = 4  # a few digits — as many more as it takes to tell the two values apart (a rounding)
     while digits < 15 and number(printed, lang, digits) == number(corrected, lang, digits):
@@ -295,21 +297,6 @@ def certified_mark(w, lang: str) -> str:
     # not in \verdicthow: whether a witness is certified does not depend on the machine
     # (its balls are bounded by counted evaluations, not time)
     return W["certified_yes"] if _wget(w, "certified") else W["certified_no"]
-
-
-#: the checker's name for the n-th time derivative of a function at a witness's point (phi_t1)
-_JET_PARAMETER = re.compile(r"^([A-Za-z]+)_t([0-4])$")
-_DOT_COMMANDS = ("", r"\dot", r"\ddot", r"\dddot", r"\ddddot")
-
-
-def _param_name(name: str) -> str:
-    """A witness's coordinate in the paper's notation: φ̇ for the checker's phi_t1."""
-    jet = _JET_PARAMETER.match(name)
-    if jet:
-        base, order = paper_latex(sp.Symbol(jet.group(1))), int(jet.group(2))
-        return f"{_DOT_COMMANDS[order]}{{{base}}}" if order else base
-    return paper_latex(sp.Symbol(name))
-
 
 
 def detail_text(reason, lang: str) -> str:
@@ -378,10 +365,12 @@ def verdict_short(st: Step, lang: str) -> str:
     """One short verdict: 'verified symbolically.', 'refuted (erratum, see …).'"""
     W, o = WORDS[lang], st.outcome
     v = o.verdict
+    if o.status is Status.NOTATION:  # notation, nothing to check: no verdict to qualify
+        return W["status"]["notation"] + "."
     how = "" if v.method is Method.NONE else W["methods"][v.method.value]
     out = W["verdicts"][v.name] + (f" \\verdicthow{{{how}}}" if how else "")
     if o.status is Status.CLEARED:
         out += " (" + W["status"]["cleared"] + ")"
-    elif o.status in (Status.UNEXPECTED, Status.NOTATION):
+    elif o.status is Status.UNEXPECTED:
         out += " (" + W["status"][o.status.value] + ")"
     return out + "."

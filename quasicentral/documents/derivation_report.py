@@ -36,7 +36,8 @@ def report_tex(rec: TextRecords, lang: str) -> str:
     for section, group in sections_of(steps):
         parts.append(f"\\section{{{pdf_safe(section_title(text, prose, section, lang))}}}\n")
         if section == sections_of(steps)[0][0]:
-            parts.append(W["report_intro"] + "\n\n")
+            identity = all(st.mode is Mode.IDENTITY for st in steps)
+            parts.append(W["report_intro_identity" if identity else "report_intro"] + "\n\n")
         for st in group:
             parts.append(_report_entry(st, by_id, groups, prose, lang))
     parts.append(figures_section(text, prose, lang))
@@ -70,19 +71,27 @@ def _summary(steps: list[Step], groups: list[CauseGroup], prose: TextProse, lang
             f"({W['section']}~\\ref{{sec:cleared}})" if counts.get("cleared") else "") + " \\\\",
         f"\\quad {W['count_inconclusive']} & {inconclusive} & \\\\",
     ]
+    if counts.get("notation"):  # the rows add up to the entries checked
+        rows.append(f"\\quad {W['count_notation']} & {counts['notation']} & \\\\")
     story = [p for p in (prose.abstract.get(lang) or prose.intro.get(lang, ""),
                          prose.source.get(lang) or W["source_generic"]) if p]
     out = [f"\\section*{{{W['summary']}}}\n\\phantomsection\\addcontentsline{{toc}}{{section}}{{{W['summary']}}}\n",
            "".join(p + "\n\\medskip\n\n" for p in story),
-           W["checked_identity" if all(s.mode is Mode.IDENTITY for s in steps) else "checked"].format(n=len(steps))
+           W[_checked_key(steps)].format(n=len(steps))
            + "\n\n",
-           "\\begin{center}\n\\begin{tabular}{@{}lrl@{}}\n\\toprule\n" + "\n".join(rows)
+           "\\begin{center}\n\\begin{tabular}{@{}lr>{\\raggedright\\arraybackslash}p{0.42\\linewidth}@{}}\n\\toprule\n" + "\n".join(rows)
            + "\n\\bottomrule\n\\end{tabular}\n\\end{center}\n"]
     unexpected = [s for s in steps if s.outcome.status is Status.UNEXPECTED]
     if unexpected:
         out.append(W["status"]["unexpected"] + ": " + ", ".join(f"\\ref{{e:{s.label}}}" for s in unexpected)
                    + ".\n\n")
     return "".join(out)
+
+
+def _checked_key(steps: list[Step]) -> str:
+    """How page 1 says the entries were checked: all re-derived, all as printed, or both."""
+    identities = sum(s.mode is Mode.IDENTITY for s in steps)
+    return "checked_identity" if identities == len(steps) else "checked_mixed" if identities else "checked"
 
 
 def _cell(latex: str, width: int = 30) -> str:
@@ -204,11 +213,12 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
     out = [f"\\subsection*{{{pdf_safe(entry_heading(st, prose, lang))}}}"
            f"\\entrylabel{{e:{st.label}}}{{{escape(st.tag)}}}%\n",
            f"\\textbf{{{W['printed']}:}}\n" + printed_display(e.latex)]
-    # as re-derived
-    out.append(f"\\textbf{{{W['derived']}:}}")
+    # as re-derived: an identity is checked as printed (the summary says so), nothing to show
     mode = st.mode
+    if mode is not Mode.IDENTITY:
+        out.append(f"\\textbf{{{W['derived']}:}}")
     if mode is Mode.IDENTITY:
-        out.append(" " + W["identity_rederived"] + "\n\n")
+        pass
     elif st.derivation is None:
         out.append(" " + W["no_derivation"] + "\n\n")
     elif st.error:
@@ -248,13 +258,26 @@ def _report_entry(st: Step, by_id: dict[str, Step], groups: list[CauseGroup], pr
         note = erratum_note(st, prose, lang, citing(by_id.values()))  # its own words (the cause's are in its section)
         if note:
             out.append(note + "\n\n")
-    # the step
-    if st.derivation is not None:
+    # the step: an identity's only where it rests on other entries or the text says more
+    plain_identity = (mode is Mode.IDENTITY and not [u for u in st.uses if u in by_id]
+                      and not prose.entry(st.entry.id).step.get(lang))
+    if st.derivation is not None and not plain_identity:
         uses = [ref_of(by_id, u, handout=False) for u in st.uses if u in by_id]
         body = step_text(st, by_id, prose, lang, handout=False)
         src = (f"({W['uses']} " + join_refs(uses, lang) + ")") if uses else ""
         out.append(f"\\textbf{{{W['step']}:}} " + body + (" " + src if src else "") + "\n\n")
     return "".join(out)
+
+
+def _sentences(parts: list[str]) -> str:
+    """The pieces of evidence as sentences, each ended by one full stop (a detail that ends in
+    its own — "do not match." — gets no second one, and no semicolon runs on into the next)."""
+    out = []
+    for p in parts:
+        p = p.rstrip()
+        closed = p.endswith(".") or p.endswith(".}")
+        out.append(p if closed else p + ".")
+    return " ".join(out)
 
 
 def _method_section(steps: list[Step], lang: str) -> str:
@@ -278,7 +301,7 @@ def _method_section(steps: list[Step], lang: str) -> str:
             cv = st.outcome.corrected_verdict
             chow = "" if cv.method is Method.NONE else W["methods"][cv.method.value]
             ev.append(W["corrected_form"] + " " + W["verdicts"][cv.name] + (f" \\verdicthow{{{chow}}}" if chow else ""))
-        out.append(f"\\ref{{e:{st.label}}} & {W['status'][st.outcome.status.value]} & " + "; ".join(ev) + " \\\\\n")
+        out.append(f"\\ref{{e:{st.label}}} & {W['status'][st.outcome.status.value]} & " + _sentences(ev) + " \\\\\n")
     out.append("\\bottomrule\n\\end{longtable}\n}\n")
     return "".join(out)
 

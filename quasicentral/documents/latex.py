@@ -39,6 +39,7 @@ from sympy.core.function import AppliedUndef
 from sympy.printing.latex import LatexPrinter
 
 from quasicentral.notation.bridge import is_jet, jet_of
+from quasicentral.notation.units import unit_latex
 
 # --- the printer ------------------------------------------------------------------------------
 
@@ -52,13 +53,16 @@ class Notation:
     functions: dict = field(default_factory=dict)  # function name -> LaTeX
     dotted: frozenset = frozenset()
     variables: frozenset = frozenset()
+    units: dict = field(default_factory=dict)  # symbol name -> LaTeX of the units its values are in
 
     @staticmethod
     def of(table, symbols: dict | None = None, functions: dict | None = None) -> "Notation":
         """The notation of a text's symbol table, with extra names (its report.toml)."""
         names = {s.name: s.latex for s in table.specs if s.variable is None}
         funcs = {s.name: s.latex for s in table.specs if s.variable is not None}
-        return Notation({**names, **(symbols or {})}, {**funcs, **(functions or {})}, table.dotted, table.variables)
+        units = {s.name: u for s in table.specs if s.variable is None and (u := unit_latex(s.units))}
+        return Notation({**names, **(symbols or {})}, {**funcs, **(functions or {})}, table.dotted, table.variables,
+                        units)
 
 
 _NOTATION: ContextVar[Notation] = ContextVar("notation", default=Notation())
@@ -93,6 +97,10 @@ class _Arccotg(sp.Function):
     nargs = 1
 
 
+#: the significant digits a decimal of a formula is shown in (the checker keeps all of them)
+FLOAT_DIGITS = 12
+
+
 class PaperLatexPrinter(LatexPrinter):
     """sympy's LaTeX printer speaking the paper's notation (see the module docstring)."""
 
@@ -120,6 +128,14 @@ class PaperLatexPrinter(LatexPrinter):
         if expr.name in self.names:
             return self.names[expr.name]
         return super()._print_Symbol(expr, style=style)
+
+    def _print_Float(self, expr):
+        """A decimal in at most :data:`FLOAT_DIGITS` significant digits: a display, not the
+        number (a root found at 100 digits printed whole filled a line of the re-derived form;
+        the checker keeps every digit)."""
+        if expr._prec > sp.Float(0, FLOAT_DIGITS)._prec:
+            expr = sp.Float(expr, FLOAT_DIGITS)
+        return super()._print_Float(expr)
 
     def _derivative_of(self, base: str, var, order: int) -> str:
         if order == 0:
@@ -295,3 +311,24 @@ def names_as_printed(printed_latex: str, names: dict[str, str] | None = None) ->
             elif uses_one and not uses_other and tex == other:
                 out[name] = one
     return out
+
+
+#: the checker's name for the n-th time derivative of a function at a witness's point (phi_t1)
+_JET_PARAMETER = re.compile(r"^([A-Za-z]+)_t([0-4])$")
+_DOT_COMMANDS = ("", r"\dot", r"\ddot", r"\dddot", r"\ddddot")
+
+
+def parameter_unit(name: str) -> str:
+    r"""The units a witness's coordinate is in, as LaTeX after its value (``\,\mathrm{K}``),
+    where the text declared them by name; '' else (a letter formula, a derivative's jet)."""
+    unit = notation().units.get(name, "")
+    return r"\," + unit if unit else ""
+
+
+def parameter_latex(name: str) -> str:
+    """A witness's coordinate in the paper's notation: φ̇ for the checker's phi_t1."""
+    jet = _JET_PARAMETER.match(name)
+    if jet:
+        base, order = paper_latex(sp.Symbol(jet.group(1))), int(jet.group(2))
+        return f"{_DOT_COMMANDS[order]}{{{base}}}" if order else base
+    return paper_latex(sp.Symbol(name))

@@ -82,12 +82,18 @@ WORDS = MappingProxyType({
                     r"error found is backed by a witness, a point at which the printed and the corrected "
                     r"form differ, certified by ball arithmetic where it could be "
                     r"(section~\ref{{sec:method}})."),
+        "checked_mixed": (r"This report checks the {n} equations of the text one by one.  Each was derived "
+                          r"again with the computer algebra system sympy from the equations it rests on, or, "
+                          r"where the text states it as it stands, checked as printed on its stated "
+                          r"constraints; then compared symbolically where sympy proves the difference zero, "
+                          r"otherwise numerically at points of the physical domain at 30 and 60 digits; every "
+                          r"error found is backed by a witness, a point at which the two forms differ, "
+                          r"certified by ball arithmetic where it could be (section~\ref{{sec:method}})."),
         "checked_identity": (r"This report checks the {n} equations of the text one by one, each as printed on "
                              r"its stated constraints: symbolically where sympy proves its two sides equal, "
                              r"otherwise numerically at points drawn from its domain at 30 and 60 digits; every "
                              r"error found is backed by a witness, a point at which the two sides differ, "
                              r"certified by ball arithmetic where it could be (section~\ref{{sec:method}})."),
-        "identity_rederived": "none needed: the relation is checked as printed, on its stated constraints.",
         "count_checked": "Equations checked",
         "section": "section",
         "count_verified": "verified",
@@ -96,6 +102,7 @@ WORDS = MappingProxyType({
         "count_cause": "1 cause",
         "count_cleared": "suspects cleared",
         "count_inconclusive": "inconclusive or unexpected",
+        "count_notation": "notation (nothing to check)",
         "how_reached": "of which",
         "errata_table": "The errata, printed and corrected side by side",
         "errata_more": r"Section~\ref{{sec:errata}} explains each cause once.",
@@ -173,6 +180,8 @@ WORDS = MappingProxyType({
         "none_found": "None.",
         "report_intro": (r"Each equation follows in the order of the text: as printed, as re-derived, the "
                          r"verdict and the step that produces it."),
+        "report_intro_identity": (r"Each equation follows in the order of the text: as printed and its verdict, "
+                                  r"with the corrected form where the print is wrong."),
         "equation": "Equation",
         "relation": "Relation",
         "dims_ok": "",
@@ -232,12 +241,18 @@ WORDS = MappingProxyType({
                     r"v~bodech fyzikálního oboru na 30 a~60 platných číslic.  Každou nalezenou chybu "
                     r"dokládá protipříklad, bod, ve kterém se vytištěný a~opravený tvar liší, a~kde to šlo, "
                     r"je rozdíl potvrzen intervalovou aritmetikou (oddíl~\ref{{sec:method}})."),
+        "checked_mixed": (r"Tato zpráva ověřuje jednu po druhé všech {n} rovnic textu.  Každou jsme znovu "
+                          r"odvodili v~systému počítačové algebry sympy z~rovnic, na kterých stojí, nebo, kde ji "
+                          r"text uvádí tak, jak stojí, ověřili tak, jak je vytištěna, na jejím uvedeném oboru; "
+                          r"porovnání je symbolické, kde sympy dokáže, že rozdíl je nulový, jinak numerické "
+                          r"v~bodech fyzikálního oboru na 30 a~60 platných číslic.  Každou nalezenou chybu "
+                          r"dokládá protipříklad, bod, ve kterém se oba tvary liší, a~kde to šlo, je rozdíl "
+                          r"potvrzen intervalovou aritmetikou (oddíl~\ref{{sec:method}})."),
         "checked_identity": (r"Tato zpráva ověřuje jednu po druhé všech {n} rovnic textu, každou tak, jak je "
                              r"vytištěna, na jejím uvedeném oboru: symbolicky, kde sympy dokáže, že se obě strany "
                              r"rovnají, jinak numericky v~bodech jejího oboru na 30 a~60 platných číslic; každou "
                              r"nalezenou chybu dokládá protipříklad, bod, ve kterém se obě strany liší, a~kde to "
                              r"šlo, je rozdíl potvrzen intervalovou aritmetikou (oddíl~\ref{{sec:method}})."),
-        "identity_rederived": "není třeba: vztah se ověřuje tak, jak je vytištěn, na svém uvedeném oboru.",
         "count_checked": "Kontrolovaných rovnic",
         "section": "oddíl",
         "count_verified": "správně",
@@ -246,6 +261,7 @@ WORDS = MappingProxyType({
         "count_cause": "jedna příčina",
         "count_cleared": "vyvrácených podezření",
         "count_inconclusive": "nerozhodnutých nebo neočekávaných",
+        "count_notation": "označení (není co ověřit)",
         "how_reached": "z~toho",
         "errata_table": "Chyby: vytištěný a~opravený tvar vedle sebe",
         "errata_more": r"Oddíl~\ref{{sec:errata}} vysvětluje každou příčinu jednou.",
@@ -308,7 +324,7 @@ WORDS = MappingProxyType({
         "methods": {"symbolic": "symbolicky", "numeric": "numericky", "certified": "intervalovou aritmetikou",
                     "dimensional": "rozměrovou analýzou", "none": "žádnou metodou"},
         "see_cause": r"viz~\ref{{{label}}}",
-        "certified_yes": "potvrzeno",
+        "certified_yes": "potvrzeno",  # the method section's term; the witness sentences say it too
         "certified_no": "nepotvrzeno",
         "at": "v~bodě",
         "vs": "vytištěno {p}, správně {c}",
@@ -320,6 +336,8 @@ WORDS = MappingProxyType({
         "none_found": "Žádné.",
         "report_intro": (r"Rovnice následují v~pořadí textu: jak jsou vytištěny, jak jsme je znovu "
                          r"odvodili, verdikt a~krok, který je dává."),
+        "report_intro_identity": (r"Rovnice následují v~pořadí textu: jak jsou vytištěny a~jejich verdikt, "
+                                  r"u~chybných s~opraveným tvarem."),
         "equation": "Rovnice",
         "relation": "Vztah",
         "dims_ok": "",

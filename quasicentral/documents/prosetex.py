@@ -148,6 +148,16 @@ def _single_base(s: str, i: int) -> bool:
 ONE_LETTER_WORDS = MappingProxyType({"en": frozenset("aI"), "cs": frozenset("ksvzouaiKSVZOUAI")})
 
 
+#: a number in scientific form as the witness sentences write it: 8,799·10¹², −1.5·10⁻⁷
+_SCIENTIFIC = re.compile(r"(?<![\w.,])([−-]?\d+(?:[.,]\d+)?)·10([⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
+_FROM_SUPERSCRIPT = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+
+
+def _scientific(m: re.Match) -> str:
+    mantissa = m.group(1).replace("−", "-").replace(",", "{,}")
+    return f"\\ensuremath{{{mantissa}\\cdot 10^{{{m.group(2).translate(_FROM_SUPERSCRIPT)}}}}}"
+
+
 def text(s: str, letters: bool = True, lang: str = "en") -> str:
     r"""Prose with Unicode mathematics as LaTeX for pdfLaTeX (T1 fonts, UTF-8 input).
 
@@ -161,7 +171,12 @@ def text(s: str, letters: bool = True, lang: str = "en") -> str:
 
     >>> print(text("v tisku je x − κy a k je modul", lang="cs"))
     v~tisku je \ensuremath{x} \ensuremath{-} \ensuremath{\kappa y} a~k~je modul
+    >>> print(text("levá strana 1,065·10⁴, pravá −2·10⁻⁵", lang="cs"))
+    levá strana \ensuremath{1{,}065\cdot 10^{4}}, pravá \ensuremath{-2\cdot 10^{-5}}
     """
+    sci = _SCIENTIFIC.search(s)
+    if sci:  # a number with its power of ten is one piece of mathematics, 1{,}065\cdot 10^{4}
+        return text(s[:sci.start()], letters, lang) + _scientific(sci) + text(s[sci.end():], letters, lang)
     tokens: list[tuple[bool, str]] = []  # (is_math, latex)
 
     def push(is_math: bool, tex: str) -> None:
@@ -353,7 +368,7 @@ def _tied(prose: str, words: frozenset) -> str:
 
 # --- prose of the derivations and errata, cleaned for a reader ------------------------------------
 _GREEK_WORDS = MappingProxyType({"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "zeta": "ζ", "kappa": "κ",
-                "lambda": "λ", "rho": "ϱ", "psi": "ψ", "phi": "φ", "vphi": "φ", "Omega": "Ω",
+                "lambda": "λ", "lam": "λ", "eta": "η", "nu": "ν", "sigma": "σ", "rho": "ϱ", "psi": "ψ", "phi": "φ", "vphi": "φ", "Omega": "Ω",
                 "omega": "ω", "pi": "π", "theta": "θ", "tau": "τ"})
 #: Names of the machinery a reader does not need: what they stand for in the text's notation.
 CODE_NAMES = MappingProxyType({"elliptic_k": "K", "elliptic_f": "F", "elliptic_e": "E", "Fj": "F", "Ej": "E", "Kc": "K",
@@ -384,7 +399,12 @@ def clean_prose(s: str) -> str:
     'K(m) and φ₀'
     >>> print(clean_prose("h = y(t_v), x'' = a with x'(0) = v0, the 'free' fall"))
     h = y(t_v), x′′ = a with x′(0) = v₀, the ‘free’ fall
+    >>> print(clean_prose(r"int_0^oo of lam at $\\lambda = 2$ as x -> oo"))
+    ∫_0^∞ of λ at $\\lambda = 2$ as x -> ∞
     """
+    parts = s.split("$")
+    if len(parts) > 1 and len(parts) % 2 == 1:  # inline mathematics (a witness's $\\lambda$) is kept as written
+        return "$".join(p if i % 2 else clean_prose(p) for i, p in enumerate(parts))
     s = _TEST_REFERENCE.sub("", s)
     s = re.sub(r'"([^"]+)"', "\u201c\\1\u201d", s)  # straight quotes become typographic ones
     # single quotes around words, never the primes of a derivative (x'' = a, x'(0) = v0)
@@ -402,6 +422,7 @@ def clean_prose(s: str) -> str:
     s = re.sub(r"\b(" + "|".join(sorted(_GREEK_WORDS, key=len, reverse=True)) + r")(\d?)\b(?!\s+(?:functions?|constants?)\b)",
                lambda m: _GREEK_WORDS[m.group(1)] + m.group(2).translate(_SUBSCRIPT_DIGITS), s)
     s = re.sub(r"\bint_(\w)\^(\w+|\{[^{}]*\})", r"∫_\1^\2", s)
+    s = re.sub(r"(?<=[\^_])oo\b|(?<=[\s(=,])oo\b|(?<=→ )oo\b", "∞", s)  # sympy's oo
     s = re.sub(r"\b(elliptic_[kfe]|Fj|Ej|Kc|Ec)\b", lambda m: CODE_NAMES[m.group(1)], s)
     s = re.sub(r"\bdsolve of\b", "the solution of", s)
     s = re.sub(r"\bdsolve\b", "solving", s)

@@ -15,6 +15,7 @@ from functools import cached_property
 
 import sympy as sp
 
+from quasicentral.documents.latex import parameter_latex, parameter_unit
 from quasicentral.documents.prosetex import clean_prose, escape, text, with_math
 from quasicentral.documents.prose import KINDS_CS, WORDS, TextProse, join_refs, prose_of
 from quasicentral.engine import catalog
@@ -242,11 +243,27 @@ def cite(tex: str, tags: dict[str, str]) -> str:
     return re.sub(rf"(?<![\w.:/\\-])({names})(?![\w-])", lambda m: tags[m.group(1)], tex)
 
 
+def _math_name(name: str) -> str:
+    """A witness's parameter in a note as the text writes it: $\\lambda$ for the checker's lam."""
+    return f"${parameter_latex(name)}$"
+
+
+def _math_unit(name: str) -> str:
+    """The units after a witness's value in a note, where the text declared them by name."""
+    unit = parameter_unit(name)
+    return f" ${unit[2:]}$" if unit else ""
+
+
+def reader_note(note: str, witness, lang: str) -> str:
+    """A record's note for a reader: its witness in a few digits, in the text's names and units."""
+    return render_note(note, witness, lang, WITNESS_DIGITS, _math_name, _math_unit)
+
+
 def cleared_note(st: Step, lang: str, tags: dict[str, str] | None = None) -> str:
     """What a reader is told about a cleared suspicion: its record's note in the language."""
     note = st.cleared.note_in(lang) if st.cleared is not None else ""
     witness = getattr(st.outcome.verdict, "witness", None)
-    return with_math(cite(clean_prose(render_note(note, witness, lang, WITNESS_DIGITS)), tags), lang=lang) if note else ""
+    return with_math(cite(clean_prose(reader_note(note, witness, lang)), tags), lang=lang) if note else ""
 
 
 def erratum_note(st: Step, prose: TextProse, lang: str, tags: dict[str, str] | None = None) -> str:
@@ -255,10 +272,10 @@ def erratum_note(st: Step, prose: TextProse, lang: str, tags: dict[str, str] | N
     witness = getattr(st.outcome.verdict, "witness", None)
     own = prose.entry(st.entry.id).erratum.get(lang)
     if own:
-        return render_note(own, witness, lang, WITNESS_DIGITS)  # numbers only through {witness…} placeholders
+        return reader_note(own, witness, lang)  # numbers only through {witness…} placeholders
     record = st.erratum if st.erratum is not None else st.cleared
     note = record.note_in(lang) if record is not None else ""
-    return with_math(cite(clean_prose(render_note(note, witness, lang, WITNESS_DIGITS)), tags), letters=True,
+    return with_math(cite(clean_prose(reader_note(note, witness, lang)), tags), letters=True,
                      lang=lang) if note else ""
 
 

@@ -181,6 +181,8 @@ def _short_number(s: str, digits: int = 10) -> str:
 
     >>> _short_number("1.8409926290586405123e-16"), _short_number("-0.75012152623546089 + 1.79811868757946419i")
     ('1.840992629e-16', '-0.7501215262 + 1.798118688i')
+    >>> _short_number("inf"), _short_number("-inf")
+    ('∞', '-∞')
     """
     from decimal import Decimal, InvalidOperation
 
@@ -189,9 +191,10 @@ def _short_number(s: str, digits: int = 10) -> str:
 
     def one(x: str) -> str:
         try:
-            return format(Decimal(x), f".{digits}g")
+            d = Decimal(x)
         except InvalidOperation:
             return x
+        return format(d, f".{digits}g") if d.is_finite() else "-∞" if d < 0 else "∞"  # a limit without bound
     for sep in (" + ", " - "):
         head, found, tail = s.rpartition(sep)
         if found and tail.endswith("i"):

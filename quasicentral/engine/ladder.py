@@ -100,7 +100,8 @@ def tolerance(exponent: float, dps: int):
 
 
 def agrees(diff, ref, dps: int, opts: Options) -> bool:
-    return diff <= tolerance(opts.agreement_exponent, dps) * ref
+    """An infinite difference (one side infinite) agrees with nothing, whatever the reference."""
+    return diff <= tolerance(opts.agreement_exponent, dps) * ref and not mpmath.isinf(diff)
 
 
 class _Evaluator:
@@ -123,6 +124,11 @@ class _Evaluator:
             mag = max(abs(pv), abs(dv))
             if self.fs is not None:
                 mag = max(mag, abs(+self.fs(*vals)))
+            finite = [v for v in (pv, dv) if mpmath.isfinite(v)]
+            if not self.at_most and len(finite) == 1 and (mpmath.isinf(pv) or mpmath.isinf(dv)):
+                # one side infinite (a limit that grows without bound), the other finite: a
+                # difference no precision closes, judged by the finite side's magnitude
+                return Rung(pv, dv, mpmath.inf, abs(finite[0]))
             diff = abs(pv - dv) if not self.at_most else _excess(pv, dv, mag, dps)
             if not (mpmath.isfinite(diff) and mpmath.isfinite(mag)):
                 raise ValueError("not finite")
@@ -191,9 +197,12 @@ def classify(rows, opts: Options) -> list[tuple[PointClass, float]]:
     for _, row in rows:
         ok = [agrees(r.diff, reference(r, floor), dps, opts) for dps, r in zip(ladder, row)]
         lo, hi = row[0].diff, row[-1].diff
-        rel = float(min(hi / (max(row[-1].magnitude, floor) or mpmath.mpf(1)), mpmath.mpf(1e300)))
+        rel = math.inf if mpmath.isinf(hi) else float(min(hi / (max(row[-1].magnitude, floor) or mpmath.mpf(1)),
+                                                          mpmath.mpf(1e300)))
         if all(ok):
             out.append((PointClass.AGREE, rel))
+        elif all(mpmath.isinf(r.diff) for r in row):
+            out.append((PointClass.DISAGREE, rel))  # one side infinite on every rung
         elif len(row) > 1 and row[-1].falls:
             out.append((PointClass.VANISHES, rel))
         elif len(row) > 1 and not any(ok) and abs(lo - hi) <= mpmath.mpf(opts.stable_within) * hi:

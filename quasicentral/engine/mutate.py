@@ -260,11 +260,13 @@ def _domain_assumptions(der, syms, table: SymbolTable) -> dict:
     return repl
 
 
-def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTable) -> Equivalence | None:
+def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTable, dims=None) -> Equivalence | None:
     """:data:`Equivalence.PROOF` when sympy proves every compared value of the mutant equal to
     the derived one with the domain's signs as assumptions (κ ≥ 0 ⇒ √(κ²) = κ);
     :data:`Equivalence.NUMERIC` when the full checker (:data:`STRONG`) verifies it at every
-    point; else None."""
+    point — or, for a relation judged along a passage (an O-term, a limit printed ∞), verifies
+    it there: a(1 + e²)/(1 + e cos φ) = a(1 − e cos φ) + O(e²) holds with the e² term's sign
+    flipped, and I₁(a²x)/x⁴ still grows without bound; else None."""
     from quasicentral.engine.asymptotic import passage_relation
     from quasicentral.engine.claims import claims_for
     from quasicentral.engine.ladder import numeric
@@ -272,8 +274,14 @@ def equivalent_on_domain(mutant: list, der, result, label: str, table: SymbolTab
     from quasicentral.notation.domain import substitute_definitions
     from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
-    if passage_relation(mutant):  # an O-term is judged along its passage, never as two values
-        return None
+    if passage_relation(mutant) or any(isinstance(r, sp.Eq) and r.has(sp.Limit) and r.has(sp.oo, -sp.oo)
+                                       for r in mutant):
+        # an O-term or an infinite limit is judged along its passage, never as two values
+        try:
+            verdict = check(mutant, dims or {}, der, label, STRONG, table, result)
+        except Exception:  # noqa: BLE001 - a mutant the checker cannot judge is not shown equivalent
+            return None
+        return Equivalence.NUMERIC if isinstance(verdict, Verified) else None
     try:
         with time_limit(FAST.symbolic_seconds) as limit:
             cm = claims_for(mutant, der, result)
@@ -323,7 +331,7 @@ def _run_entry(ws, eid: str, per_entry: int | None):
                 continue
             if isinstance(v, Verified):
                 how = equivalent_on_domain(list(mu.relations), der, result, f"{eid}:{mu.operator}:{mu.site}",
-                                           entry.symbols)
+                                           entry.symbols, entry.dims)
                 if how is not None:
                     on_domain.append({"entry": eid, "operator": mu.operator, "site": mu.site, "how": how.value})
                     continue

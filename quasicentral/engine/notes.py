@@ -38,9 +38,23 @@ def parameters_text(w, lang: str = "en", digits: int = PARAMETER_DIGITS) -> dict
     return out
 
 
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def _power_of_ten(shown: str) -> str:
+    """8.799e+12 → 8.799·10¹², as the verdict lines write it (a decimal without one as it is)."""
+    mantissa, e, exponent = shown.partition("e")
+    return f"{mantissa}·10{str(int(exponent)).translate(_SUPERSCRIPT)}" if e else shown
+
+
 def short_value(value: str, digits: int | None) -> str:
     """A witness value (a decimal string of up to 20 digits) in ``digits`` significant digits
-    with a real minus sign, for a reader; as it is where ``digits`` is None or it is no number."""
+    with a real minus sign and a power of ten, for a reader; as it is where ``digits`` is None or
+    it is no number.
+
+    >>> short_value("8.79912e+12", 4), short_value("-1.5e-7", 3), short_value("inf", 4)
+    ('8.799·10¹²', '−1.5·10⁻⁷', '∞')
+    """
     if digits is None:
         return value
     try:
@@ -49,7 +63,9 @@ def short_value(value: str, digits: int | None) -> str:
             shown = mpmath.nstr(x, digits, strip_zeros=True) if x != 0 else "0"
     except (ValueError, TypeError):
         return value
-    return shown.replace("-", "−")
+    if mpmath.isinf(x):  # a limit without bound
+        return "−∞" if x < 0 else "∞"
+    return _power_of_ten(shown).replace("-", "−")
 
 
 _SENTENCE = MappingProxyType({
@@ -62,7 +78,7 @@ _SENTENCE = MappingProxyType({
            "at {at} {q} is {p} at the last step and {c} three steps before ({cert})",
            "at {at}, {q}: {p} and {c} ({cert})", "{q}: {p} and {c} ({cert})"),
     "cs": ("v bodě {at} dává vytištěný tvar {p}, správný {c} ({q}{r}; {cert})",
-           "certifikováno", "necertifikováno",
+           "potvrzeno", "nepotvrzeno",  # the Czech documents' term for certified (their method section)
            "bez numerického svědka (vytištěný vztah je rozměrově nekonzistentní)",
            "vytištěná hodnota je {p}, správná {c} ({q}{r}; {cert})", "; relativní rozdíl ",
            "v bodě {at} je levá strana {p}, pravá {c} ({r}{cert})",
@@ -72,10 +88,12 @@ _SENTENCE = MappingProxyType({
 })
 
 
-def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
+def witness_sentence(w, lang: str = "en", digits: int | None = None, name=None, unit=None) -> str:
     """The witness as one sentence, from its record only: its values in full (the JSON, the
     terminal), or in ``digits`` significant digits with real minus signs (a document's prose,
-    its point then in as many)."""
+    its point then in as many); ``name`` writes a parameter's name as the reader's text does
+    ($\\lambda$ for lam in a document; default: as the checker names it) and ``unit`` the units
+    after its value (' K' where the text declared them; default: none)."""
     words = _SENTENCE.get(lang, _SENTENCE["en"])
     if w is None:
         return words[3]
@@ -83,7 +101,8 @@ def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
 
     style = Plain(lang)
     params = parameters_text(w, lang, digits or PARAMETER_DIGITS)
-    at = ", ".join(f"{k} = {v.replace('-', '−') if digits else v}" for k, v in params.items())
+    at = ", ".join(f"{name(k) if name else k} = {_power_of_ten(v).replace('-', '−') if digits else v}"
+                   f"{unit(k) if unit else ''}" for k, v in params.items())
     p, c = short_value(w.printed, digits), short_value(w.corrected, digits)
     more = digits
     while more is not None and p == c and more < 20:  # as many digits as tell the two apart
@@ -105,21 +124,21 @@ def witness_sentence(w, lang: str = "en", digits: int | None = None) -> str:
                            c=style.decimal(c), r=r, cert=words[1] if w.certified else words[2])
 
 
-def render_note(note: str, w, lang: str = "en", digits: int | None = None) -> str:
+def render_note(note: str, w, lang: str = "en", digits: int | None = None, name=None, unit=None) -> str:
     """``note`` with its ``{witness…}`` placeholders filled from the witness ``w`` ('—' where
     the witness has no such value); its numbers in ``digits`` significant digits where given
-    (:func:`witness_sentence`)."""
+    and its parameters' names and units written by ``name`` and ``unit`` (:func:`witness_sentence`)."""
     style = Plain(lang)
 
     def fill(m: re.Match) -> str:
         field = m.group(1)
         if field is None:
-            return witness_sentence(w, lang, digits)
+            return witness_sentence(w, lang, digits, name, unit)
         if w is None:
             return "—"
         if field.startswith("parameters."):
             got = parameters_text(w, lang, digits or PARAMETER_DIGITS).get(field.split(".", 1)[1], "—")
-            return got.replace("-", "−") if digits else got
+            return _power_of_ten(got).replace("-", "−") if digits else got
         if field == "quantity":
             from quasicentral.engine.wording import render
 

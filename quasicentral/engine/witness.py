@@ -246,6 +246,8 @@ def _agreed(a, b, want: int) -> tuple[str, int]:
     a, b = ra, rb
     if a == 0 and b == 0:
         return "0", want
+    if mpmath.isinf(a) or mpmath.isinf(b):  # a limit that grows without bound, on both evaluations
+        return ("inf" if a > 0 else "-inf", want) if a == b else ("", 0)
     fa, fb = exact_fraction(a), exact_fraction(b)
     for n in range(want, 0, -1):
         sa = round_significant(fa, n)

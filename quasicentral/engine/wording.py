@@ -100,9 +100,23 @@ def _numbers_cs(f, s) -> str:
     return f" (numericky {word.get(n, n)})" if isinstance(n, str) else f" ({f.sub('numbers')})"
 
 
-def _places_cs(n) -> str:
-    """n decimal places in Czech: 1 desetinné místo, 2–4 desetinná místa, 5 and more desetinných míst."""
+_POWER = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _places_en(n) -> str:
+    """The places a printed decimal is rounded to: 1 decimal place, 3 decimal places, to a whole
+    number, to a multiple of 10⁴ (3.155e7 printed: −4 places)."""
     n = int(n)
+    return (f"{n} decimal place" + ("s" if n > 1 else "") if n > 0 else "to a whole number" if n == 0
+            else f"to a multiple of 10{str(-n).translate(_POWER)}")
+
+
+def _places_cs(n) -> str:
+    """n decimal places in Czech: 1 desetinné místo, 2–4 desetinná místa, 5 and more desetinných
+    míst; na celé číslo; na násobek 10⁴."""
+    n = int(n)
+    if n <= 0:
+        return "na celé číslo" if n == 0 else f"na násobek 10{str(-n).translate(_POWER)}"
     return f"{n} desetinné místo" if n == 1 else f"{n} desetinná místa" if 2 <= n <= 4 else f"{n} desetinných míst"
 
 
@@ -121,7 +135,7 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "cs": lambda f, s: "sympy rozhodne z předpokladů o symbolech, že vytištěný vztah platí"},
     Code.ROUNDS_TO: {
         "en": lambda f, s: (f"the exact value {s.decimal(f.value)} rounds to the printed {s.decimal(f.printed)} "
-                            f"({f.places} decimal places)"),
+                            f"({_places_en(f.places)})"),
         "cs": lambda f, s: (f"přesná hodnota {s.decimal(f.value)} se zaokrouhlí na vytištěné {s.decimal(f.printed)} "
                             f"({_places_cs(f.places)})")},
     Code.HOLDS: {
@@ -170,7 +184,7 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
         "cs": lambda f, s: "rozměrově nekonzistentní" + _numbers_cs(f, s)},
     Code.ROUNDS_OTHERWISE: {
         "en": lambda f, s: (f"the exact value {s.decimal(f.exact)} does not round to the printed "
-                            f"{s.decimal(f.printed)} ({f.places} decimal places)"),
+                            f"{s.decimal(f.printed)} ({_places_en(f.places)})"),
         "cs": lambda f, s: (f"přesná hodnota {s.decimal(f.exact)} se nezaokrouhlí na vytištěné "
                             f"{s.decimal(f.printed)} ({_places_cs(f.places)})")},
     Code.ROUNDING_FREE: {
@@ -185,7 +199,7 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                             "správné je obojí zaokrouhlení")},
     Code.ROUNDING_UNDECIDED: {
         "en": lambda f, s: (f"no precision tried decides whether the value rounds to {s.decimal(f.printed)} "
-                            f"({f.places} decimal places)"),
+                            f"({_places_en(f.places)})"),
         "cs": lambda f, s: (f"žádná vyzkoušená přesnost nerozhodne, zda se hodnota zaokrouhlí na {s.decimal(f.printed)} "
                             f"({_places_cs(f.places)})")},
     Code.NOTHING_TO_CHECK: {"en": lambda f, s: "nothing to check", "cs": lambda f, s: "není co ověřit"},

@@ -17,6 +17,7 @@ from sympy.printing.pycode import MpmathPrinter
 from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_mpf, ball_function, ball_value,
                                          compile_path, flint_precision, mp_to_acb)
 from quasicentral.notation.integrals import infinite_end, prepare
+from quasicentral.notation.limits import agreeing, limit_value
 from quasicentral.notation.quadrature import breaks, frequency, inside, quad
 from quasicentral.notation.series import geometric_sum
 from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
@@ -152,20 +153,6 @@ def _outermost_forms(expr: sp.Basic) -> list[sp.Basic]:
 # --- sums, products, limits and derivatives by numbers ---------------------------------------
 #: terms a finite sum or product adds one by one; beyond, it is summed as a series
 DIRECT_TERMS = 100_000
-#: a series' or a limit's value stands where two ways of computing it agree to this fraction of
-#: the working digits (else the point drops out: the precision ladder is not fooled by an
-#: extrapolation that is stably wrong, as Richardson's is for a limit in √h)
-AGREEMENT_FRACTION = 0.8
-
-
-def _agreeing(a, b):
-    """``a`` where it and ``b`` agree to AGREEMENT_FRACTION of the working digits, else ValueError."""
-    tol = mpmath.mpf(10) ** (-AGREEMENT_FRACTION * mpmath.mp.dps)
-    if not (mpmath.isfinite(a) and mpmath.isfinite(b)) or abs(a - b) > tol * max(abs(a), abs(b), tol):
-        raise ValueError("no value the numbers agree on (a series or a limit that converges too slowly here)")
-    return a
-
-
 def _integer(v) -> int:
     """A bound of a sum that must be an integer."""
     n = mpmath.nint(v)
@@ -217,7 +204,7 @@ def _series(form, outer):
         first = total(f, interval)
         with mpmath.workdps(mpmath.mp.dps + 10):
             second = total(f, interval)
-        return _agreeing(first, second)
+        return agreeing(first, second)
     return value
 
 
@@ -230,103 +217,8 @@ def _limit(form, outer):
 
     def value(*vals):
         vals = vals[:len(outer)]
-        x0 = at(*vals)
-        g = lambda t: f(t, *vals)  # noqa: E731
-        direct = _continuous_value(g, x0, sides)
-        if direct is None:
-            direct = _small_steps(g, x0, sides) if mpmath.isfinite(x0) else _far_out(g, x0)
-        if direct is not None:
-            return direct
-        out = []
-        for direction in sides:
-            # Richardson's extrapolation (mpmath's default) and the exponential sequence
-            # (exp=True) must agree: each alone can be stably wrong
-            out.append(_agreeing(mpmath.limit(g, x0, direction=direction),
-                                 mpmath.limit(g, x0, direction=direction, exp=True)))
-        return _agreeing(out[0], out[-1])
+        return limit_value(lambda t: f(t, *vals), at(*vals), sides)
     return value
-
-
-def _continuous_value(g, x0, sides):
-    """g(x0) where g is continuous there: finite at x0 and, a step h = 10^(−dps/3)·max(1, |x0|)
-    away on each side of the limit, within 10^(−dps/4) (relative) of it — three evaluations
-    instead of an extrapolation's hundreds (DLMF 22.5.1's limit at K + iK′: 37 s → 4 s for the entry).
-    None where g is not evaluable at x0 (0/0, a pole) or jumps there: the sequences decide."""
-    if not mpmath.isfinite(x0):
-        return None
-    dps = mpmath.mp.dps
-    try:
-        v0 = g(x0)
-        if not mpmath.isfinite(v0):
-            return None
-        h = mpmath.mpf(10) ** (-dps // 3) * max(1, abs(x0))
-        near = [g(x0 + side * h) for side in sides]
-    except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence):
-        return None
-    tol = mpmath.mpf(10) ** (-dps // 4) * max(1, abs(v0))
-    return v0 if all(mpmath.isfinite(v) and abs(v - v0) <= tol for v in near) else None
-
-
-#: the step exponents of :func:`_small_steps`: h = 10^(−dps/2 − k)·max(1, |x0|), for each k
-SMALL_STEPS = (1, 2)
-
-
-def _small_steps(g, x0, sides):
-    """The limit of g at x0 where g cannot be evaluated at x0 (0/0: sin(ω_d t)/ω_d at ω_d = 0)
-    but is smooth on each side: Richardson's step-halving 2g(x0 + h/2) − g(x0 + h), whose error
-    is O(h²), from two tiny steps h (:data:`SMALL_STEPS`) at twice the working precision; the
-    sides and the steps must agree to :data:`AGREEMENT_FRACTION` of the working digits, else
-    None and the sequences decide.  The sequences (x0 + 1/n) start a unit away, where a function
-    such as e^(−γt)·cosh(…) is 10^30 times its limit and their extrapolation loses every digit."""
-    if not mpmath.isfinite(x0):
-        return None
-    dps = mpmath.mp.dps
-    tol = mpmath.mpf(10) ** (-AGREEMENT_FRACTION * dps)
-    try:
-        with mpmath.workdps(2 * dps + 10):
-            found = []
-            for side in sides:
-                for k in SMALL_STEPS:
-                    h = mpmath.mpf(10) ** (-(dps // 2 + k)) * max(1, abs(x0))
-                    found.append(2 * g(x0 + side * h / 2) - g(x0 + side * h))
-    except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence):
-        return None
-    if not all(mpmath.isfinite(v) for v in found):
-        return None
-    size = max(abs(v) for v in found)
-    if any(abs(v - found[0]) > tol * size for v in found[1:]):
-        return None
-    return +found[-1]
-
-
-#: the powers of two :func:`_far_out` steps through: 2^8, 2^16, … up to 2^(FAR_OUT_REACH·dps)
-FAR_OUT_STEP, FAR_OUT_REACH = 8, 5
-
-
-def _far_out(g, x0):
-    """The limit of g at ±∞ where g settles far out: g at ±2^8, ±2^16, … (up to
-    2^(FAR_OUT_REACH·dps)), each at enough extra precision for what cancels in it there (eˣ − 1
-    at x = θ/T, and its square e²ˣ − 2eˣ + 1: 0.61 digits per power of two), until three in a row agree to :data:`AGREEMENT_FRACTION` of the working
-    digits.  The sequences (x = 1, 2, …) never leave a physical scale such as an Einstein
-    temperature of 10³ K, where C_V(T) → 3Nk_B has not begun to settle.  None where g does not
-    settle so (a slow, logarithmic approach): the sequences decide."""
-    dps = mpmath.mp.dps
-    tol = mpmath.mpf(10) ** (-AGREEMENT_FRACTION * dps)
-    sign = 1 if x0 > 0 else -1
-    found: list = []
-    try:
-        for k in range(FAR_OUT_STEP, FAR_OUT_REACH * dps, FAR_OUT_STEP):
-            with mpmath.workdps(dps + int(0.61 * k) + 10):
-                found.append(+g(sign * mpmath.mpf(2) ** k))
-            if not mpmath.isfinite(found[-1]):
-                return None
-            last = found[-3:]
-            size = max(abs(v) for v in last)
-            if len(last) == 3 and all(abs(v - last[-1]) <= tol * size for v in last):
-                return +last[-1]
-    except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence):
-        return None
-    return None
 
 
 def _derivative(form, outer):
@@ -372,7 +264,7 @@ def _nested_integral(form: sp.Integral, outer: tuple[sp.Symbol, ...]):
     by quadrature at the working precision — an oscillating integrand on an unbounded outer path
     through quadosc, as a single integral's.  Where sympy gives the inner integral in closed form
     (:func:`_closed_inner`) and that form agrees with the inner quadrature to
-    AGREEMENT_FRACTION of the working digits at a point of the path, the outer quadrature
+    :data:`~quasicentral.notation.limits.AGREEMENT_FRACTION` of the working digits at a point of the path, the outer quadrature
     integrates the closed form: ∫₀^∞∫₀^∞ e^{−γ(t+s)} cos ω(t − s) ds dt is a quadosc of a
     quadosc (minutes at 30 digits) by quadrature alone, one quadosc with the inner closed form
     (milliseconds); a closed form that disagrees (a sympy integral valid on other parameters
@@ -405,7 +297,7 @@ def _nested_integral(form: sp.Integral, outer: tuple[sp.Symbol, ...]):
                 start, sign = (a, 1) if mpmath.isfinite(a) else (b, -1) if mpmath.isfinite(b) else (mpmath.mpf(0), 1)
                 zs = [start + sign * mpmath.mpf(d) for d in ("0.5", "2", "8")]
             try:
-                trusted[key] = all(_agreeing(fast(z, *vals), body(z, *vals)) is not None for z in zs)
+                trusted[key] = all(agreeing(fast(z, *vals), body(z, *vals)) is not None for z in zs)
             except (ValueError, ZeroDivisionError, TypeError, OverflowError):
                 trusted[key] = False
         return fast if trusted[key] else body

@@ -218,7 +218,7 @@ ASSUMPTIONS = ("positive", "nonnegative", "negative", "nonpositive", "real", "in
 #: the names a text may not declare (the forms a transcription is built from); every other
 #: name of the vocabulary may be a text's symbol (beta, gamma, E, zeta …), which then hides
 #: the function of that name in the text's transcriptions
-RESERVED = frozenset({"D", "Fj", "Ej", "Kc", "Ec", "arccotg", "Approx", "Eq", "Ne", "Lt", "Le", "Gt", "Ge", "And",
+RESERVED = frozenset({"Fj", "Ej", "Kc", "Ec", "arccotg", "Approx", "Eq", "Ne", "Lt", "Le", "Gt", "Ge", "And",
                       "Or", "Not", "Integral", "Derivative", "Sum", "Product", "Limit", "Subs", "Symbol",
                       "Function", "Rational", "Integer", "Tuple", "Piecewise", "oo", "pi"})
 
@@ -236,6 +236,7 @@ class SymbolSpec:
     dots: bool = False  # derivatives in this variable print as Newton dots
     variables: tuple[str, ...] = ()  # a function's variables (empty for a symbol)
     meaning: str = ""
+    units: str = ""  # the dimension as declared where it names units ("W/(m K)"): how a value is read
 
     @property
     def variable(self) -> str | None:
@@ -369,7 +370,8 @@ def table_from_toml(data: dict, where: str) -> SymbolTable:
         if "dots" in raw and not isinstance(raw["dots"], bool):
             raise SymbolError(f"{key}.dots: true or false")
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key), rng,
-                                definition, bool(raw.get("dots", False)), (), _meaning(raw, key)))
+                                definition, bool(raw.get("dots", False)), (), _meaning(raw, key),
+                                str(raw.get("dimension", "")).strip()))
     for name, raw in functions.items():
         key = f"{where}: functions.{name}"
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key),

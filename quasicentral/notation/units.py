@@ -112,6 +112,36 @@ def _units(text: str) -> sp.Expr:
     return out
 
 
+def unit_latex(text: str) -> str:
+    r"""The units a dimension string names, in LaTeX for a value beside them (a witness's
+    T₀ = 254.5 K), or '' where it names none (a letter formula such as "L/T", "1", a pint
+    dimension in brackets): upright symbols, powers as exponents, in pint's order.
+
+    >>> print(unit_latex("W/(m K)"))
+    \mathrm{W}\,\mathrm{m}^{-1}\,\mathrm{K}^{-1}
+    >>> unit_latex("L^2/T"), unit_latex("1"), unit_latex("[length]")
+    ('', '', '')
+    """
+    text = str(text).strip()
+    if not text or text == "1" or "[" in text or _FORMULA.fullmatch(text):
+        return ""
+    try:
+        ureg = _registry()
+        units = ureg.parse_expression(text.replace("^", "**"))
+        items = list(getattr(units, "_units", {}).items()) if not isinstance(units, (int, float)) else []
+        symbols = [(ureg.get_symbol(name), power) for name, power in items]
+    except Exception:  # noqa: BLE001 - a string parse_dim accepted: at worst no units are shown
+        return ""
+    out = []
+    for sym, power in symbols:
+        if not re.fullmatch(r"[A-Za-zΩµμ]+", sym):  # °C, a symbol LaTeX would need escaped
+            return ""
+        sym = sym.replace("Ω", r"\Omega").replace("µ", r"\mu ").replace("μ", r"\mu ")
+        p = sp.nsimplify(power, rational=True)
+        out.append(rf"\mathrm{{{sym}}}" + ("" if p == 1 else f"^{{{p}}}"))
+    return r"\,".join(out)
+
+
 def dim_text(d: sp.Expr) -> str:
     """The inverse of :func:`parse_dim`, for messages: L²/T → ``'L^2/T'``, T^(3/2)/L^(1/2)
     (every power written as one, never a root: the text is read back by :func:`parse_dim`)."""
