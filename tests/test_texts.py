@@ -50,7 +50,8 @@ def test_new_text_refuses_a_folder_in_use(tmp_path, capsys):
 
 def test_a_symbol_named_D_hides_the_derivative_shorthand(tmp_path, capsys):
     """D for a diffusion coefficient (m²/s): any name a physicist writes is the text's; the
-    notation's D(f) shorthand is hidden in that text, whose derivatives are written Derivative."""
+    notation's D(f) shorthand is hidden in that text, whose derivatives are written Derivative.
+    An entry's name_cs heads it in the Czech report (a Czech newcomer's names never reached it)."""
     root = tmp_path / "diffusion"
     (root / "catalog").mkdir(parents=True)
     (root / "text.toml").write_text('''id = "diffusion"
@@ -80,6 +81,7 @@ title = "Spreading"
 [[equation]]
 id = "diffusion:1"
 name = "the growth of the variance"
+name_cs = "růst rozptylu"
 latex = '\\frac{d}{dt}\\,2Dt^2 = 4Dt'
 printed = \'\'\'Eq(Derivative(2*D*t**2, t), 4*D*t)\'\'\'
 
@@ -93,6 +95,10 @@ printed = \'\'\'Eq(Derivative(2*D*t**2, t), 2*D*t)\'\'\'
     assert code == 1, err
     rows = {r["id"]: r for r in json.loads(out)["equations"]}
     assert rows["diffusion:1"]["status"] == "verified" and rows["diffusion:2"]["verdict"] == "refuted", rows
+    # name_cs is the Czech report's heading; without one an entry is headed by its number
+    code, _, err = _run(["report", "--text", str(root), "--lang", "cs", "--out", str(tmp_path / "out")], capsys)
+    tex = (tmp_path / "out" / "diffusion-report-cs.tex").read_text()
+    assert code == 0 and "růst rozptylu" in tex and "the growth" not in tex, err
 
 def test_a_third_text_verifies_with_its_own_symbols(kepler, capsys):
     """G, M, e, a, p, T and θ are the text's own; u(θ), r(θ) are functions of θ, and u'' reaches
@@ -231,3 +237,54 @@ def test_mutate_on_a_users_text(kepler, capsys):
     res = json.loads(out)
     assert res["entries"] == 1 and res["mutants"] > 5 and res["false_alarms"] == 0
     assert res["recall"] == 1.0, res["undetected"]
+
+
+def test_a_quantity_defined_only_as_a_root(tmp_path, capsys):
+    """"x₁ is the first zero of J₁" (a newcomer's Approx(x1, 3.8317) was refused: x1 had no
+    value) and "u solves tan u = a·u in (π, 3π/2)", a root that moves with a: declared with
+    ``solves`` and a range (the bracket), each is the root there, its printed rounding checked
+    and its derivative in a the implicit function theorem's.  A bracket with two roots is refused."""
+    root = tmp_path / "roots"
+    (root / "catalog").mkdir(parents=True)
+    head = '''id = "roots"
+title = "Roots"
+authors = ["A. Lecturer"]
+year = 2026
+language = "en"
+check = "identity"
+
+[symbols.x1]
+meaning = "the first zero of J1"
+latex = 'j_{1,1}'
+solves = "besselj(1, x1)"
+range = ["3", "%s"]
+
+[symbols.a]
+meaning = "a slope"
+latex = 'a'
+assumptions = ["positive"]
+range = ["2", "5"]
+
+[symbols.u]
+meaning = "the root of tan u = a u between pi and 3 pi/2"
+latex = 'u'
+solves = "sin(u) - a*u*cos(u)"
+range = ["pi + 1/100", "3*pi/2 - 1/100"]
+'''
+    (root / "text.toml").write_text(head % "9/2")
+    entries = [("1", "Approx(x1, 3.8317)"), ("2", "Approx(x1, 3.8371)"), ("3", "Eq(tan(u), a*u)"),
+               ("4", "Eq(Derivative(u, a), u/(a**2*u**2 + 1 - a))"), ("5", "Eq(Derivative(u, a), u/(a**2*u**2 + 1))")]
+    (root / "catalog" / "01.toml").write_text('section = "1"\n' + "".join(
+        f'\n[[equation]]\nid = "roots:{i}"\nname = "entry {i}"\nlatex = \'x\'\nprinted = \'\'\'{p}\'\'\'\n'
+        for i, p in entries))
+    code, out, err = _run(["verify", "--text", str(root), "--json"], capsys)
+    rows = {r["id"]: r for r in json.loads(out)["equations"]}
+    assert code == 1, err
+    assert [rows[f"roots:{i}"]["verdict"] for i, _ in entries] == [
+        "verified", "refuted", "verified", "verified", "refuted"], rows
+    assert "3.83170597" in rows["roots:2"]["detail"], rows["roots:2"]
+    # a bracket [3, 8] holds two zeros of J1 (3.83 and 7.02): the quantity is not defined by it
+    (root / "text.toml").write_text(head % "8")
+    code, out, err = _run(["verify", "--text", str(root), "--json"], capsys)
+    rows = {r["id"]: r for r in json.loads(out)["equations"]}
+    assert rows["roots:1"]["verdict"] == "inconclusive" and "several roots" in rows["roots:1"]["detail"], rows

@@ -166,15 +166,11 @@ def section_title(text, prose: TextProse, section: str, lang: str) -> str:
 
 # --- words of one entry --------------------------------------------------------------------------
 def entry_heading(st: Step, prose: TextProse, lang: str) -> str:
-    """'(12) name' in English; in Czech 'Rovnice (12)' unless the text gives a Czech name."""
+    """'(12) name' where the text names the entry in the language; else 'Equation (12)'."""
     W = WORDS[lang]
     own = prose.entry(st.entry.id).name.get(lang)
-    if own:
-        name = own
-    elif lang == "en":  # a catalog's names are English (FORMAT.md; report.toml names them per language)
-        name = text(clean_prose(st.entry.name))
-    else:
-        name = ""
+    # report.toml's words first, then the catalog's name in the language (name_cs; name is English)
+    name = own or text(clean_prose(st.entry.name_in(lang)))
     word = W["equation"] if st.entry.number else W["relation"]
     tag = escape(st.tag)
     return f"{tag}~{name}" if name else f"{word}~{tag}"

@@ -8,6 +8,7 @@ transcriptions are parsed lazily, their names checked at load; a malformed file 
 
 from __future__ import annotations
 
+import re
 import tomllib
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -48,6 +49,12 @@ class Entry:
     rests_on: tuple[str, ...] = ()  # ids of the entries whose definitions hold here too
     defines_names: tuple[str, ...] = ()  # symbols the entry introduces (a definition: notation)
     path: str = ""  # the catalog file's full path, for messages
+    names: tuple[tuple[str, str], ...] = ()  # (language, name) from name_<lang>: the heading in that language
+
+    def name_in(self, lang: str) -> str:
+        """The entry's short name in ``lang``: its ``name_<lang>``, else in English its ``name``
+        (the unsuffixed wording is English, as an erratum's), else '' (the heading is its number)."""
+        return dict(self.names).get(lang) or (self.name if lang == "en" else "")
 
     @cached_property
     def constraints(self) -> tuple:
@@ -165,8 +172,6 @@ def _lines(path: Path) -> list[str]:
 def line_of(path: Path, needle: str) -> int | None:
     """The line of ``path`` where the top-level key ``needle`` is set (``needle = …``), else the
     first line holding ``needle`` (for messages naming file and line)."""
-    import re
-
     lines = _lines(path)
     if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_-]*", needle):
         for i, line in enumerate(lines, 1):
@@ -186,8 +191,6 @@ def where(path: Path, needle: str | None = None) -> str:
 def locate(path: Path, table: str, index: int = 0, key: str | None = None) -> str:
     """``path:line`` of the ``index``-th ``[[table]]`` (or ``[table]``) of a TOML file, or of its
     ``key`` where that table sets it."""
-    import re
-
     header = re.compile(rf"\s*\[\[?\s*{re.escape(table)}\s*\]\]?\s*(#.*)?$")
     any_header = re.compile(r"\s*\[")
     lines = _lines(path)
@@ -237,8 +240,6 @@ def read_bytes(path: Path, limit: int = MAX_FILE_BYTES) -> bytes:
 
 def read_toml(path: Path) -> dict:
     """A text's TOML file; a syntax error names the file and line."""
-    import re
-
     data = read_bytes(path)
     try:
         return tomllib.loads(data.decode("utf-8"))
@@ -281,6 +282,8 @@ def _deep_line(text: str, depth_limit: int = 64) -> int:
 _REQUIRED = ("id", "name", "latex", "printed")
 _KNOWN = frozenset(set(_REQUIRED) | {"number", "dims", "note", "constraints", "real", "url", "kind", "semantic", "approx",
                            "rests_on", "defines"})
+#: an entry's name in another language: name_cs, name_de …
+_NAME_IN = re.compile(r"name_[a-z]{2}")
 KINDS = ("identity", "definition", "inequality", "series", "asymptotic", "notation")
 
 
@@ -317,13 +320,13 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
         raise CatalogError(f"{here}: equation #{i + 1} lacks {', '.join(missing)}")
     if not all(isinstance(raw[k], str) for k in _REQUIRED):
         raise CatalogError(f"{here}: id, name, latex and printed are strings")
-    unknown = set(raw) - _KNOWN
+    unknown = {k for k in set(raw) - _KNOWN if not _NAME_IN.fullmatch(k)}
     if unknown:
         raise CatalogError(f"{here}: {raw['id']}: unknown key(s) {', '.join(sorted(unknown))}")
     eid = raw["id"]
     if not eid.startswith(text_id + ":") or not _printable(eid):
         raise CatalogError(f"{here}: id {eid!r} does not start with {text_id}: (or holds control characters)")
-    for key in ("note", "url", "kind", "semantic", "approx"):
+    for key in ("note", "url", "kind", "semantic", "approx", *sorted(k for k in raw if _NAME_IN.fullmatch(k))):
         if key in raw and not isinstance(raw[key], str):
             raise CatalogError(f"{locate(path, 'equation', i, key)}: {eid}: {key} is a string")
     if raw.get("approx", "").strip():
@@ -361,14 +364,13 @@ def _entry(raw: dict, i: int, path: Path, text_id: str, table: SymbolTable, sect
         note=raw.get("note", "").strip(), file=path.name, order=order, symbols=table,
         constraints_text=constraints, real_names=real, url=raw.get("url", "").strip(), kind=raw.get("kind", ""),
         semantic=raw.get("semantic", "").strip(), approx=raw.get("approx", "").strip(), rests_on=rests_on,
-        defines_names=defines, path=str(path))
+        defines_names=defines, path=str(path),
+        names=tuple(sorted((k[len("name_"):], v.strip()) for k, v in raw.items() if _NAME_IN.fullmatch(k) and v.strip())))
 
 
 def transcription_line(path: Path, i: int, exc: Exception, table: str = "equation", key: str = "printed") -> str:
     """``path:line`` of the line of the ``i``-th table's transcription that ``exc`` names (the
     reader counts lines from the transcription's first)."""
-    import re
-
     at = locate(path, table, i, key)
     m = re.match(r"line (\d+), column", str(exc).split(": ", 1)[-1]) or re.search(r"line (\d+), column", str(exc))
     if not m or ":" not in at:

@@ -80,6 +80,7 @@ class Code(str, Enum):
     ROUNDING_FREE = "rounding-free"  # symbols: a printed rounding of a value that depends on symbols
     ROUNDING_TIE = "rounding-tie"  # printed, places: the exact value lies on a half of the last place
     ROUNDING_UNDECIDED = "rounding-undecided"  # printed, places: no precision tried decides the rounding
+    ROUNDING_NO_VALUE = "rounding-no-value"  # printed, error: the value to round could not be computed
     NOT_EQUAL_ONLY = "not-equal-only"  # a printed a ≠ b: true almost everywhere, nothing to check
     # --- dimensions (the finding on one relation) -------------------------------------------
     DIM_ADDS = "dim-adds"  # first, other, sum, term

@@ -55,7 +55,7 @@ def _decimal(x: Fraction, places: int) -> str:
 def _enclosure(expr: sp.Expr, places: int):
     """(lower, upper, certified) bounds of the real value of the closed ``expr`` — from balls at
     doubling precision while they are wider than the digits shown beyond the last place, else mpmath at
-    two precisions; None where it is not real or cannot be computed."""
+    two precisions; None where it is not real, the error where it cannot be computed."""
     unit = Fraction(1, 10 ** places) if places >= 0 else Fraction(10 ** -places)
     for bits in BALL_BITS:
         try:
@@ -74,8 +74,8 @@ def _enclosure(expr: sp.Expr, places: int):
     try:
         values = [bridge.mp_eval(expr, {}, d) for d in (dps, 2 * dps)]
     except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, mpmath.libmp.NoConvergence,
-            bridge.Unsupported):
-        return None
+            bridge.Unsupported) as exc:
+        return str(exc)[:200] or type(exc).__name__
     with mpmath.workdps(2 * dps):
         a, b = values
         if not (mpmath.isfinite(a) and mpmath.isfinite(b)) or abs(mpmath.im(b)) > abs(b) * mpmath.mpf(10) ** -dps:
@@ -97,6 +97,8 @@ def check(rel: Approx, defs: dict, opts: Options) -> Verdict:
     if free:
         return Inconclusive(Method.NONE, Reason.of(Code.ROUNDING_FREE, symbols=tuple(free)))
     bounds = _enclosure(expr, places)
+    if isinstance(bounds, str):
+        return Inconclusive(Method.NONE, Reason.of(Code.ROUNDING_NO_VALUE, printed=shown, error=bounds))
     if bounds is None:
         return Inconclusive(Method.NONE, Reason.of(Code.ROUNDING_UNDECIDED, printed=shown, places=places))
     lo, hi, certified = bounds

@@ -197,6 +197,9 @@ WORDING: "MappingProxyType[Code, MappingProxyType[str, Template]]" = MappingProx
                             "either rounding is right"),
         "cs": lambda f, s: (f"přesná hodnota leží na polovině posledního vytištěného místa čísla {s.decimal(f.printed)}: "
                             "správné je obojí zaokrouhlení")},
+    Code.ROUNDING_NO_VALUE: {
+        "en": lambda f, s: f"the value printed as {s.decimal(f.printed)} could not be computed: " + s.text(f.error),
+        "cs": lambda f, s: f"hodnotu vytištěnou jako {s.decimal(f.printed)} nelze spočítat: " + s.text(f.error)},
     Code.ROUNDING_UNDECIDED: {
         "en": lambda f, s: (f"no precision tried decides whether the value rounds to {s.decimal(f.printed)} "
                             f"({_places_en(f.places)})"),

@@ -18,6 +18,7 @@ from quasicentral.notation.balls import (GUARD_BITS, Unsupported, Work, arb_to_m
                                          compile_path, flint_precision, mp_to_acb)
 from quasicentral.notation.integrals import infinite_end, prepare
 from quasicentral.notation.limits import agreeing, limit_value
+from quasicentral.notation.roots import Root, root_in
 from quasicentral.notation.quadrature import breaks, frequency, inside, quad
 from quasicentral.notation.series import geometric_sum
 from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
@@ -139,10 +140,11 @@ def mp_function(expr: sp.Basic, args: tuple[sp.Symbol, ...]):
 def _outermost_forms(expr: sp.Basic) -> list[sp.Basic]:
     """The outermost parts of ``expr`` that lambdify cannot print as a call: definite integrals
     (of one variable each: nested ones are integrals of integrals), sums and products, limits,
-    and derivatives sympy could not carry out (a function without a closed derivative)."""
+    derivatives sympy could not carry out (a function without a closed derivative) and roots
+    defined implicitly (:class:`~quasicentral.notation.roots.Root`)."""
     if isinstance(expr, sp.Integral):
         return [expr] if all(len(lim) == 3 for lim in expr.limits) else []
-    if isinstance(expr, (sp.Sum, sp.Product, sp.Limit, sp.Derivative)):
+    if isinstance(expr, (sp.Sum, sp.Product, sp.Limit, sp.Derivative, Root)):
         return [expr]
     out: list = []
     for a in expr.args:
@@ -169,6 +171,8 @@ def _numeric_form(form: sp.Basic, outer: tuple[sp.Symbol, ...]):
         return _series(form, outer)
     if isinstance(form, sp.Limit):
         return _limit(form, outer)
+    if isinstance(form, Root):
+        return _root(form, outer)
     return _derivative(form, outer)
 
 
@@ -205,6 +209,18 @@ def _series(form, outer):
         with mpmath.workdps(mpmath.mp.dps + 10):
             second = total(f, interval)
         return agreeing(first, second)
+    return value
+
+
+def _root(form, outer):
+    x = sp.Dummy("x")
+    f = mp_function(form.function.xreplace({form.variable: x}), (x,) + outer)
+    bracket = mp_lambdify(outer, [form.low, form.high])
+
+    def value(*vals):
+        vals = vals[:len(outer)]
+        a, b = bracket(*vals)
+        return root_in(lambda t: f(t, *vals), a, b)
     return value
 
 

@@ -32,6 +32,7 @@ import sympy as sp
 
 from quasicentral.notation import transcription
 from quasicentral.notation.special import FUNCTIONS as SPECIAL_FUNCTIONS
+from quasicentral.notation.roots import Root
 from quasicentral.notation.units import DIMENSIONLESS, UnitError, dim_text, parse_dim  # noqa: F401 - re-exported
 
 
@@ -337,7 +338,7 @@ class SymbolTable:
 
 # --- reading a table from text.toml ------------------------------------------------------------
 _IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
-_SYMBOL_KEYS = frozenset({"latex", "dimension", "assumptions", "range", "definition", "dots", "meaning"})
+_SYMBOL_KEYS = frozenset({"latex", "dimension", "assumptions", "range", "definition", "solves", "dots", "meaning"})
 _FUNCTION_KEYS = frozenset({"latex", "dimension", "assumptions", "variable", "variables", "meaning"})
 
 
@@ -367,6 +368,8 @@ def table_from_toml(data: dict, where: str) -> SymbolTable:
     for name, raw in symbols.items():
         key = f"{where}: symbols.{name}"
         rng, definition = _range_or_definition(raw, ns, key)
+        if "solves" in raw:
+            rng, definition = None, _solves(raw, ns, key, objs[name], rng)
         if "dots" in raw and not isinstance(raw["dots"], bool):
             raise SymbolError(f"{key}.dots: true or false")
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key), rng,
@@ -446,6 +449,22 @@ def _range_or_definition(raw: dict, ns: dict, key: str):
             raise SymbolError(f"{key}.definition: an expression in other symbols, as a string")
         definition = _expr(str(raw["definition"]), ns, f"{key}.definition")
     return rng, definition
+
+
+def _solves(raw: dict, ns: dict, key: str, sym: sp.Symbol, bracket) -> Root:
+    """A symbol defined only implicitly, ``solves = "besselj(1, x1)"``: the root of that
+    expression in the symbol's range (:class:`~quasicentral.notation.roots.Root`)."""
+    if "definition" in raw:
+        raise SymbolError(f"{key}: a symbol is defined by a definition or by solves, not both")
+    if bracket is None:
+        raise SymbolError(f"{key}.solves: give the range in which the root lies, such as range = [\"3\", \"4.5\"]")
+    if not isinstance(raw["solves"], str):
+        raise SymbolError(f"{key}.solves: an expression in {sym} (and other symbols) that vanishes at its value")
+    f = _expr(raw["solves"], ns, f"{key}.solves")
+    if sym not in f.free_symbols:
+        raise SymbolError(f"{key}.solves: {raw['solves']!r} does not hold {sym}")
+    x = sp.Dummy(sym.name)
+    return Root(f.xreplace({sym: x}), x, *bracket)
 
 
 def _meaning(raw, key) -> str:
