@@ -1107,3 +1107,45 @@ def test_a_limit_printed_finite_that_is_zero_or_infinite_is_refuted(printed, wro
     assert isinstance(numeric(Claim(printed, wrong, V), Domain(), "lim", OPTS, TABLE), Refuted)
     if right is not None:
         assert isinstance(numeric(Claim(printed, right, V), Domain(), "lim", OPTS, TABLE), Verified)
+
+
+def test_integrals_at_the_scale_of_si_units():
+    """A newcomer's statistical physics in SI units: ∫ e^(−p²/2mkT) dp over the line (width
+    10⁻²³ kg m/s) came out 4·10⁻¹¹ off on both rungs (refuted), over the half-line "divergent"
+    (|p|^(−8.8·10²³) read from a bump beside the end), and Planck's ∫ 8πhν³/c³/(e^(hν/kT) − 1) dν
+    divided by zero at ν → 0.  At the integrand's own scale, with expm1, all three hold."""
+    from quasicentral.engine.divergence import integral_divergence
+
+    p, nu = sp.Symbol("p", real=True), sp.Symbol("nu", positive=True)
+    m, kB, T, h, c = sp.Rational(3, 10**26), sp.Rational(1380649, 10**29), sp.Integer(500), \
+        sp.Rational(662607015, 10**42), sp.Integer(299792458)
+    gauss = sp.exp(-p**2 / (2 * m * kB * T))
+    cases = [(sp.Integral(gauss, (p, -sp.oo, sp.oo)), sp.sqrt(2 * sp.pi * m * kB * T)),
+             (sp.Integral(gauss, (p, 0, sp.oo)), sp.sqrt(sp.pi * m * kB * T / 2)),
+             (sp.Integral(8 * sp.pi * h * nu**3 / c**3 / (sp.exp(h * nu / (kB * T)) - 1), (nu, 0, sp.oo)),
+              8 * sp.pi**5 * kB**4 * T**4 / (15 * h**3 * c**3))]
+    for integral, exact in cases:
+        assert integral_divergence(integral, {}) is None, integral
+        f = mpeval.mp_function(integral, ())
+        for dps in (30, 60):
+            with mpmath.workdps(dps):
+                want = bridge.mp_value(exact, dps)
+                assert abs(f() - want) < mpmath.mpf(10) ** (-dps + 8) * want, (integral, dps)
+    x = sp.Symbol("x", positive=True)  # a true singularity is still seen
+    assert integral_divergence(sp.Integral(1 / x, (x, 0, 1)), {}) is not None
+
+
+def test_a_limit_far_out_that_only_cancellation_makes_is_no_value():
+    """lim_{w→∞} (T − p e^(−2κw)) e^(4κw) = p(2 − p) for a barrier's transmission T: far out the
+    difference cancels more digits than any rung has and seemed to grow without bound — a correct
+    equation refuted.  A far value that more digits change is no evidence: no value, never ∞."""
+    w = sp.Symbol("w", positive=True)
+    p = sp.Rational(16 * 3 * 5, 64)  # 16E(V0 − E)/V0² at E = 3, V0 = 8
+    T = 1 / (1 + 4 * sp.sinh(w) ** 2 / p)
+    f = mpeval.mp_function(sp.Limit((T - p * sp.exp(-2 * w)) * sp.exp(4 * w), w, sp.oo), ())
+    with mpmath.workdps(30):
+        try:
+            got = f()
+        except ValueError:
+            return
+        assert abs(got - bridge.mp_value(p * (2 - p), 30)) < mpmath.mpf(10) ** -20

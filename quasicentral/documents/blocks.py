@@ -308,13 +308,14 @@ _DIM_NAMES = MappingProxyType({DIM_L: r"\mathsf{L}", DIM_T: r"\mathsf{T}", DIM_M
               DIM_I: r"\mathsf{I}", DIM_N: r"\mathsf{N}", DIM_J: r"\mathsf{J}"})
 
 
-def dim_latex(d: str) -> str:
-    """A dimension as the engine writes it ('L^2/T') in sans-serif base letters."""
+def dim_latex(d: str, inline: bool = False) -> str:
+    """A dimension as the engine writes it ('L^2/T') in sans-serif base letters (``inline``: a
+    quotient with a slash, for a table's line)."""
     try:
         expr = parse_dim(d)
     except UnitError:
         return r"\text{" + escape(d) + "}"
-    return "1" if expr == 1 else sp.latex(expr, mul_symbol="dot", symbol_names=_DIM_NAMES)
+    return "1" if expr == 1 else sp.latex(expr, mul_symbol="dot", symbol_names=_DIM_NAMES, fold_short_frac=inline)
 
 
 def expr_latex(s: str) -> str:

@@ -6,9 +6,10 @@ verdict and step, the figures, and the method with the evidence for each equatio
 from __future__ import annotations
 
 from quasicentral.documents.blocks import (VERSIONS_FILE, aligned, certified_mark, derived_rows, detail_text,
-                                           dimension_sentence, display, gathered, pdf_safe, preamble, printed_display,
+                                           dim_latex, dimension_sentence, display, gathered, pdf_safe, preamble, printed_display,
                                            printed_rows, ref_of, same_as_printed, title_block, verdict_short,
                                            witness_short)
+from quasicentral.documents.latex import paper_latex
 from quasicentral.documents.prosetex import clean_prose, escape, with_math
 from quasicentral.documents.prose import WORDS, TextProse, join_refs
 from quasicentral.documents.steps import (CauseGroup, FigureItem, Step, TextRecords, caption, cause_groups, cause_note,
@@ -17,6 +18,7 @@ from quasicentral.documents.steps import (CauseGroup, FigureItem, Step, TextReco
                                           section_title, sections_of, step_text)
 from quasicentral.engine.registry import Mode
 from quasicentral.engine.verdict import Method, Status
+from quasicentral.notation.units import dim_text, unit_latex
 
 
 def report_tex(rec: TextRecords, lang: str) -> str:
@@ -42,6 +44,7 @@ def report_tex(rec: TextRecords, lang: str) -> str:
             parts.append(_report_entry(st, by_id, groups, prose, lang))
     parts.append(figures_section(text, prose, lang))
     parts.append("\\appendix\n")
+    parts.append(_notation_section(text, steps, lang))
     parts.append(_method_section(steps, lang))
     parts.append(_errata_table(steps, lang))
     parts.append(software_note(text, prose, lang))
@@ -278,6 +281,41 @@ def _sentences(parts: list[str]) -> str:
         closed = p.endswith(".") or p.endswith(".}")
         out.append(p if closed else p + ".")
     return " ".join(out)
+
+
+#: the notation's elliptic functions in Jacobi's form with the modulus k, as a transcription
+#: writes them: their convention is stated under the notation table of a text that uses one
+_ELLIPTIC = ("Fj(", "Ej(", "Kc(", "Ec(")
+
+
+def _notation_section(text, steps: list[Step], lang: str) -> str:
+    """The text's symbols as it writes them: what each stands for (in the document's language,
+    where the text says), its dimension or units, and where the checker draws it from (its
+    range) or what defines it; the elliptic convention where the text uses elliptic functions."""
+    W = WORDS[lang]
+    rows = []
+    for spec in text.symbols.specs:
+        sym = paper_latex(spec.obj)
+        unit = unit_latex(spec.units)
+        dim = f"${unit}$" if unit else (f"${dim_latex(dim_text(spec.dimension), inline=True)}$"
+                                        if spec.dimension is not None else "")
+        if spec.definition is not None:
+            where = f"${sym} = {paper_latex(spec.definition, fold_short_frac=True)}$"
+        elif spec.range is not None:
+            lo, hi = (paper_latex(e, fold_short_frac=True) for e in spec.range)
+            where = f"$[{lo},\\ {hi}]$"
+        else:
+            where = ""
+        meaning = with_math(clean_prose(spec.meaning_in(lang)), lang=lang)
+        rows.append(f"${sym}$ & {meaning} & {dim} & {where} \\\\")
+    out = [f"\\section{{{W['notation_title']}}}\\label{{sec:notation}}\n", W["notation_text"] + "\n\n",
+           "{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.14\\linewidth}>{\\raggedright}p{0.42\\linewidth}"
+           ">{\\raggedright}p{0.14\\linewidth}>{\\raggedright\\arraybackslash}p{0.24\\linewidth}@{}}\n\\toprule\n"
+           f"{W['notation_symbol']} & {W['notation_meaning']} & {W['notation_dimension']} & {W['notation_where']}"
+           " \\\\\n\\midrule\n\\endhead\n", "\n".join(rows), "\n\\bottomrule\n\\end{longtable}\n}\n"]
+    if any(any(f in st.entry.printed_text for f in _ELLIPTIC) for st in steps):
+        out.append(W["notation_elliptic"] + "\n\n")
+    return "".join(out)
 
 
 def _method_section(steps: list[Step], lang: str) -> str:

@@ -140,6 +140,15 @@ WORDS = MappingProxyType({
         "suspicion": "Suspicion",
         "witness": "Witness",
         "versions": "Software used",
+        "notation_title": "Notation",
+        "notation_text": (r"The symbols of the text as it writes them, with what each stands for, its dimension "
+                          r"(in the base dimensions L, T, M, $\Theta$, or in the units the text gives) and the range "
+                          r"the checker draws it from, or what defines it."),
+        "notation_symbol": "Symbol", "notation_meaning": "Meaning", "notation_dimension": "Dimension",
+        "notation_where": "Range or definition",
+        "notation_elliptic": (r"Elliptic integrals are written with the modulus $k$ as the text writes them, "
+                              r"$F(k, \zeta) = \int_0^\zeta \frac{dt}{\sqrt{(1 - t^2)(1 - k^2 t^2)}}$; the checker "
+                              r"evaluates them in the parameter $m = k^2$ (sympy's and mpmath's convention)."),
         "method": "Method and evidence",
         "method_text": (
             r"\emph{Symbolically}: sympy simplifies the difference of the two sides of the printed "
@@ -298,6 +307,15 @@ WORDS = MappingProxyType({
         "suspicion": "Podezření",
         "witness": "Protipříklad",
         "versions": "Použitý software",
+        "notation_title": "Označení",
+        "notation_text": (r"Symboly textu tak, jak je píše, s~tím, co znamenají, s~jejich rozměrem (v~základních "
+                          r"rozměrech L, T, M, $\Theta$ nebo v~jednotkách, které text uvádí) a~s~oborem, ze kterého "
+                          r"je program vybírá, nebo s~tím, co je definuje."),
+        "notation_symbol": "Symbol", "notation_meaning": "Význam", "notation_dimension": "Rozměr",
+        "notation_where": "Obor nebo definice",
+        "notation_elliptic": (r"Eliptické integrály píšeme s~modulem $k$ jako text, "
+                              r"$F(k, \zeta) = \int_0^\zeta \frac{dt}{\sqrt{(1 - t^2)(1 - k^2 t^2)}}$; program je "
+                              r"počítá v~parametru $m = k^2$ (jak je zvykem v~sympy a~mpmath)."),
         "method": "Metoda a~doklady",
         "method_text": (
             r"\emph{Symbolicky}: sympy zjednoduší rozdíl obou stran vytištěného vztahu na nulu (kde se "

@@ -10,6 +10,7 @@ import sympy as sp
 
 from quasicentral.engine.reasons import Code, Reason
 from quasicentral.notation import bridge
+from quasicentral.notation.quadrature import mass_scale
 from quasicentral.notation.timelimit import TimeLimitExceeded, time_limit
 
 #: the growth order q in |f| ~ |x − e|^(−q) from which an end is not integrable (1, less a margin)
@@ -19,6 +20,9 @@ NOT_DECAYING = 1 + 1e-3
 _ERRORS = (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError, AttributeError)
 
 
+#: the distances 10^(−d) from a finite end at which the integrand's growth is read, and how far the
+#: two orders they give may differ (relative) for a power law |x − e|^(−q)
+NEAR, POWER_SPREAD = (10, 20, 30), 0.1
 #: where an infinite end is probed: x = 10^10 … 10^19 (an oscillating integrand changes sign there)
 FAR = tuple(10 ** k for k in range(10, 20))
 
@@ -27,7 +31,9 @@ def _decay(f, values, sign) -> object | None:
     """The decay order q of |f| ~ |x|^(−q) far out (None unless it is at most
     :data:`NOT_DECAYING` at every probe of :data:`FAR`, with one sign throughout and
     |f|·|x|^NOT_DECAYING never falling: a tail that is not integrable)."""
-    xs = [sign * mpmath.mpf(x) for x in FAR]
+    # far from the integrand's own scale (a Planck spectrum in hertz peaks at 10¹⁴: 10¹⁰ is not far out)
+    scale = mass_scale(lambda x: f(x, *values), mpmath.mpf(0), [sign])
+    xs = [sign * scale * mpmath.mpf(x) for x in FAR]
     fs = [f(x, *values) for x in xs]
     if not all(isinstance(v, mpmath.mpf) and mpmath.isfinite(v) and v != 0 for v in fs):
         return None
@@ -42,9 +48,10 @@ def _decay(f, values, sign) -> object | None:
 def integral_divergence(expr: sp.Expr, pt: dict) -> Reason | None:
     """Why an integral of ``expr`` diverges at the point ``pt`` (None if none is seen): at a
     finite end where the integrand is unbounded, its growth order q in |f| ~ |x − e|^(−q) is
-    estimated from two distances (1e-10, 1e-20) at 40 digits, q ≥ 1 − 1e-3 not being
-    integrable; at an infinite end, from |f| at 1e10 and 1e20: a decay no faster than 1/x is
-    not integrable."""
+    estimated from the distances 1e-10 and 1e-20 at 40 digits, q ≥ 1 − 1e-3 not being
+    integrable, where the distances 1e-20 and 1e-30 give the same order; at an infinite end,
+    from |f| at 1e10 … 1e19 times the integrand's scale: a decay no faster than 1/x is not
+    integrable."""
     for integral in expr.atoms(sp.Integral):
         if len(integral.limits) != 1 or len(integral.limits[0]) != 3:
             continue
@@ -81,12 +88,14 @@ def _integral_end(function, x, outer, ends, pt) -> Reason | None:
         direction = inward if other is None or other >= e else -inward
         if other is None:
             direction = 1 if ends[1 - i] is sp.oo else -1
-        g1 = abs(f(e + direction * mpmath.mpf("1e-10"), *values))
-        g2 = abs(f(e + direction * mpmath.mpf("1e-20"), *values))
-        if not (mpmath.isfinite(g1) and mpmath.isfinite(g2)) or g1 == 0 or g2 <= g1:
+        g1, g2, g3 = (abs(f(e + direction * mpmath.mpf(10) ** -d, *values)) for d in NEAR)
+        if not all(mpmath.isfinite(g) for g in (g1, g2, g3)) or g1 == 0 or g2 <= g1:
             continue
         q = mpmath.log(g2 / g1) / mpmath.log(mpmath.mpf(10) ** 10)
-        if q >= NOT_INTEGRABLE:
+        q_nearer = mpmath.log(g3 / g2) / mpmath.log(mpmath.mpf(10) ** 10)
+        # a power law holds at both decades (1/x: 1 and 1); a narrow bump beside the end is no
+        # growth (e^(−p²/2mkT), width 10⁻²³: "orders" 10²³ and 10³)
+        if q >= NOT_INTEGRABLE and abs(q - q_nearer) <= POWER_SPREAD * q:
             return Reason.of(Code.INTEGRAND_GROWS, variable=str(x), end=mpmath.nstr(e, 8), order=mpmath.nstr(q, 3))
     return None
 

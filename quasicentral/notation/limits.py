@@ -49,6 +49,25 @@ def limit_value(g, x0, sides: tuple[int, ...]):
     return agreeing(out[0], out[-1])
 
 
+#: the digits beyond a far evaluation's own at which it is repeated: where the two differ, what
+#: cancels in g there needs more than it was given (T − p·e^(−2κw) at w = 2⁸ cancels 220 digits)
+#: and the evaluation is no evidence at all
+STABLE_EXTRA = 20
+
+
+def _stable(g, x, digits: int, tol):
+    """g(x) at ``digits`` where it agrees with g(x) at :data:`STABLE_EXTRA` more to ``tol``
+    (relative), else ValueError: a value that only cancellation made (a far-out limit that
+    seemed to grow without bound refuted a correct equation)."""
+    with mpmath.workdps(digits):
+        first = +g(x)
+    with mpmath.workdps(digits + STABLE_EXTRA):
+        second = +g(x)
+    if mpmath.isfinite(first) and abs(first - second) > tol * max(abs(first), abs(second)):
+        raise ValueError("a value far out that more digits change (cancellation)")
+    return first
+
+
 def _aitken(vals, tol, scale):
     """The limit of a sequence that approaches it geometrically (g − L ~ c·r^n: a power law in
     h or x at steps by a constant factor) by Aitken's Δ² process, L ≈ v₂ − (Δv₂)²/Δ²v₁, where
@@ -145,7 +164,8 @@ def _power_law(g, x0, sides):
     try:
         with mpmath.workdps(3 * dps + 10):
             for side in sides:
-                vals = [g(x0 + side * mpmath.mpf(10) ** (-(dps + k)) * max(1, abs(x0))) for k in POWER_LAW_STEPS]
+                vals = [_stable(g, x0 + side * mpmath.mpf(10) ** (-(dps + k)) * max(1, abs(x0)), 3 * dps + 10, tol)
+                        for k in POWER_LAW_STEPS]
                 if not all(mpmath.isfinite(v) and v != 0 for v in vals):
                     return None
                 found.append(_power_law_side(vals, tol))
@@ -189,8 +209,7 @@ def _far_out(g, x0):
     found: list = []
     try:
         for k in range(FAR_OUT_STEP, FAR_OUT_REACH * dps, FAR_OUT_STEP):
-            with mpmath.workdps(dps + int(0.61 * k) + 10):
-                found.append(+g(sign * mpmath.mpf(2) ** k))
+            found.append(_stable(g, sign * mpmath.mpf(2) ** k, dps + int(0.61 * k) + 10, tol))
             if not mpmath.isfinite(found[-1]):
                 return None
             last = found[-3:]

@@ -238,6 +238,12 @@ class SymbolSpec:
     variables: tuple[str, ...] = ()  # a function's variables (empty for a symbol)
     meaning: str = ""
     units: str = ""  # the dimension as declared where it names units ("W/(m K)"): how a value is read
+    meanings: tuple[tuple[str, str], ...] = ()  # (language, meaning) from meaning_<lang>
+
+    def meaning_in(self, lang: str) -> str:
+        """What the symbol stands for in ``lang``: its ``meaning_<lang>``, else in English its
+        ``meaning`` (the unsuffixed wording is English), else ''."""
+        return dict(self.meanings).get(lang) or (self.meaning if lang == "en" else "")
 
     @property
     def variable(self) -> str | None:
@@ -374,11 +380,12 @@ def table_from_toml(data: dict, where: str) -> SymbolTable:
             raise SymbolError(f"{key}.dots: true or false")
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key), rng,
                                 definition, bool(raw.get("dots", False)), (), _meaning(raw, key),
-                                str(raw.get("dimension", "")).strip()))
+                                str(raw.get("dimension", "")).strip(), _meanings(raw, key)))
     for name, raw in functions.items():
         key = f"{where}: functions.{name}"
         specs.append(SymbolSpec(name, objs[name], _latex(raw, name, key), _dimension(raw, key),
-                                variables=variables_of[name], meaning=_meaning(raw, key)))
+                                variables=variables_of[name], meaning=_meaning(raw, key),
+                                units=str(raw.get("dimension", "")).strip(), meanings=_meanings(raw, key)))
     _check_ranges(specs, where)
     return SymbolTable(tuple(specs))
 
@@ -467,6 +474,21 @@ def _solves(raw: dict, ns: dict, key: str, sym: sp.Symbol, bracket) -> Root:
     return Root(f.xreplace({sym: x}), x, *bracket)
 
 
+#: a symbol's meaning in another language: meaning_cs …
+_MEANING_IN = re.compile(r"meaning_[a-z]{2}")
+
+
+def _meanings(raw, key) -> tuple[tuple[str, str], ...]:
+    out = []
+    for k in sorted(raw):
+        if _MEANING_IN.fullmatch(k):
+            if not isinstance(raw[k], str):
+                raise SymbolError(f"{key}.{k}: a string")
+            if raw[k].strip():
+                out.append((k[len("meaning_"):], raw[k].strip()))
+    return tuple(out)
+
+
 def _meaning(raw, key) -> str:
     m = raw.get("meaning", "")
     if not isinstance(m, str):
@@ -481,7 +503,7 @@ def _check_entry(name, raw, allowed, key):
         raise SymbolError(f"{key}: {name} is a name of the notation (choose another name)")
     if not isinstance(raw, dict):
         raise SymbolError(f"{key}: a table such as {{ latex = '...', dimension = 'L' }}")
-    unknown = set(raw) - allowed
+    unknown = {k for k in set(raw) - allowed if not _MEANING_IN.fullmatch(k)}
     if unknown:
         raise SymbolError(f"{key}: unknown key(s) {', '.join(sorted(unknown))}")
 
