@@ -82,7 +82,7 @@ def _summary(steps: list[Step], groups: list[CauseGroup], prose: TextProse, lang
            "".join(p + "\n\\medskip\n\n" for p in story),
            W[_checked_key(steps)].format(n=len(steps))
            + "\n\n",
-           "\\begin{center}\n\\begin{tabular}{@{}lr>{\\raggedright\\arraybackslash}p{0.42\\linewidth}@{}}\n\\toprule\n" + "\n".join(rows)
+           "\\begin{center}\n\\begin{tabular}{@{}lr>{\\raggedright\\arraybackslash}p{0.34\\linewidth}@{}}\n\\toprule\n" + "\n".join(rows)
            + "\n\\bottomrule\n\\end{tabular}\n\\end{center}\n"]
     unexpected = [s for s in steps if s.outcome.status is Status.UNEXPECTED]
     if unexpected:
@@ -309,8 +309,8 @@ def _notation_section(text, steps: list[Step], lang: str) -> str:
         meaning = with_math(clean_prose(spec.meaning_in(lang)), lang=lang)
         rows.append(f"${sym}$ & {meaning} & {dim} & {where} \\\\")
     out = [f"\\section{{{W['notation_title']}}}\\label{{sec:notation}}\n", W["notation_text"] + "\n\n",
-           "{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.14\\linewidth}>{\\raggedright}p{0.42\\linewidth}"
-           ">{\\raggedright}p{0.14\\linewidth}>{\\raggedright\\arraybackslash}p{0.24\\linewidth}@{}}\n\\toprule\n"
+           "{\\small\n\\begin{longtable}{@{}>{\\raggedright}p{0.12\\linewidth}>{\\raggedright}p{0.38\\linewidth}"
+           ">{\\raggedright}p{0.12\\linewidth}>{\\raggedright\\arraybackslash}p{0.24\\linewidth}@{}}\n\\toprule\n"
            f"{W['notation_symbol']} & {W['notation_meaning']} & {W['notation_dimension']} & {W['notation_where']}"
            " \\\\\n\\midrule\n\\endhead\n", "\n".join(rows), "\n\\bottomrule\n\\end{longtable}\n}\n"]
     if any(any(f in st.entry.printed_text for f in _ELLIPTIC) for st in steps):
