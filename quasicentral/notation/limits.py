@@ -63,7 +63,8 @@ def _stable(g, x, digits: int, tol):
         first = +g(x)
     with mpmath.workdps(digits + STABLE_EXTRA):
         second = +g(x)
-    if mpmath.isfinite(first) and abs(first - second) > tol * max(abs(first), abs(second)):
+    if mpmath.isfinite(first) != mpmath.isfinite(second) or (
+            mpmath.isfinite(first) and abs(first - second) > tol * max(abs(first), abs(second))):
         raise ValueError("a value far out that more digits change (cancellation)")
     return first
 
@@ -194,10 +195,10 @@ def _far_out(g, x0):
     """The limit of g at ±∞ where g settles far out: g at ±2^8, ±2^16, … (up to
     2^(FAR_OUT_REACH·dps)), each at enough extra precision for what cancels in it there (eˣ − 1
     at x = θ/T, and its square e²ˣ − 2eˣ + 1: 0.61 digits per power of two), until three in a
-    row agree to :data:`AGREEMENT_FRACTION` of the working digits.  The sequences (x = 1, 2, …) never leave a physical scale such as an Einstein
-    temperature of 10³ K, where C_V(T) → 3Nk_B has not begun to settle.  A limit 0 or ±∞ never
-    agrees so relative to itself: g tends to 0 where three in a row fall in magnitude and the last
-    is below that fraction of the largest seen (x²e^(−ax)), to ±∞ where three in a row grow with
+    row agree to :data:`AGREEMENT_FRACTION` of the working digits.  The sequences (x = 1, 2, …)
+    never leave a physical scale such as an Einstein temperature of 10³ K, where C_V(T) → 3Nk_B
+    has not begun to settle.  A limit 0 or ±∞ never agrees so relative to itself: g tends to 0
+    where three in a row fall in magnitude and the last is below that fraction of the largest seen (x²e^(−ax)), to ±∞ where three in a row grow with
     one sign beyond its inverse (e^(ax)); the precision ladder moves both thresholds, so a value
     that only seems to vanish on one rung leaves the point unstable.  A value approached as a
     power, c·x^(−p) (erfc(x/(2√(at))) → 1 as t^(−1/2)), is Aitken's (:func:`_aitken`) on the

@@ -14,15 +14,18 @@ QUAD_MAX_PIECES = 64  # the most pieces mpmath's quadrature cuts a path into
 QUAD_PIECES_GAIN = 100  # ... and the least gain in its error estimate for which it cuts further
 
 
-#: the decades :func:`mass_scale` reads an integrand's mass at (10^j for j from −SCALE_REACH), and its
-#: step; a scale within SCALE_KEPT decades of 1 is left as it is
-SCALE_REACH, SCALE_STEP, SCALE_KEPT = 300, 3, 2
+#: the decades :func:`mass_scale` reads an integrand's mass at (10^j for j from −SCALE_REACH: SI
+#: units span 10⁻³⁴ … 10²⁶), and its step; a scale within SCALE_KEPT decades of 1 is left as it is,
+#: and so is one whose mass exceeds the mass near 1 by less than the factor SCALE_CLOSE
+SCALE_REACH, SCALE_STEP, SCALE_KEPT, SCALE_CLOSE = 120, 3, 2, 10
 
 
 def mass_scale(f, c, directions) -> "mpmath.mpf":
     """The power of ten s at which |f(c ± x)|·x, the integrand's mass per decade of x, is largest
-    along an unbounded path from c (1 where it is within SCALE_KEPT decades of 1, or unreadable)."""
-    best, at = mpmath.mpf(0), 0
+    along an unbounded path from c — 1 where the mass near x = 1 is within :data:`SCALE_CLOSE`
+    of that largest (a flat mass, K₁(x)·x → 1 at 0, moves nothing), where the largest lies within
+    SCALE_KEPT decades of 1, or where the integrand cannot be read."""
+    mass = {}
     with mpmath.workdps(15):
         for j in range(-SCALE_REACH, SCALE_REACH + 1, SCALE_STEP):
             x = mpmath.mpf(10) ** j
@@ -31,9 +34,15 @@ def mass_scale(f, c, directions) -> "mpmath.mpf":
                     v = abs(f(c + d * x)) * x
                 except (ValueError, ZeroDivisionError, TypeError, OverflowError, ArithmeticError):
                     continue
-                if mpmath.isfinite(v) and v > best:
-                    best, at = v, j
-    return mpmath.mpf(10) ** at if abs(at) > SCALE_KEPT else mpmath.mpf(1)
+                if mpmath.isfinite(v) and v > mass.get(j, 0):
+                    mass[j] = v
+    if not mass:
+        return mpmath.mpf(1)
+    at = max(mass, key=lambda j: (mass[j], -abs(j)))
+    near_one = max((mass.get(j, 0) for j in range(-SCALE_KEPT, SCALE_KEPT + 1)), default=0)
+    if abs(at) <= SCALE_KEPT or near_one * SCALE_CLOSE >= mass[at]:
+        return mpmath.mpf(1)
+    return mpmath.mpf(10) ** at
 
 
 def quad(f, interval, singular: bool = False, omega=None):
